@@ -1,0 +1,206 @@
+// Per-cell lattice-Boltzmann physics, written once for the CPU and CUDA backends.
+//
+// Populations are stored shifted by their rest weight, g_i = f_i - w_i (Lehmann et al. 2022,
+// "Accuracy and performance of the lattice Boltzmann method with 64-bit, 32-bit, and customized
+// 16-bit number formats", Phys. Rev. E 106, 015308), which keeps float32 round-off relative to the
+// small deviations from rest instead of to 1. All formulas below are written for g.
+#pragma once
+
+#include <cmath>
+
+#include "ship_lrm/lbm/d3q19.hpp"
+
+#if defined(__CUDACC__)
+#define SHIP_LRM_UNROLL _Pragma("unroll")
+#elif defined(__GNUC__) && !defined(__clang__)
+#define SHIP_LRM_UNROLL _Pragma("GCC unroll 19")
+#else
+#define SHIP_LRM_UNROLL
+#endif
+
+namespace ship_lrm::lbm {
+
+using d3q19::Q;
+
+// Density and velocity of one cell (lattice units).
+struct Macro {
+  float rho = 1.0f;
+  float u[3] = {0.0f, 0.0f, 0.0f};
+};
+
+// Collision parameters in lattice units.
+struct CollisionParams {
+  float nu = 1.0f / 6.0f;  // kinematic viscosity; omega = 1 / (3 nu + 1/2) (thesis eq. 6.7)
+  float smagorinsky = 0.0f;  // Smagorinsky constant s (0: plain BGK)
+};
+
+SHIP_LRM_HD float omega_from_nu(float nu) { return 1.0f / (3.0f * nu + 0.5f); }
+
+// Discrete equilibrium, thesis eq. 6.8, minus the rest weight w_i.
+SHIP_LRM_HD float equilibrium(int i, float rho, const float u[3]) {
+  const float cu = d3q19::cx(i) * u[0] + d3q19::cy(i) * u[1] + d3q19::cz(i) * u[2];
+  const float uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+  return d3q19::w(i) * ((rho - 1.0f) + rho * (3.0f * cu + 4.5f * cu * cu - 1.5f * uu));
+}
+
+// Zeroth and first moments, thesis eqs. 6.11 and 6.12: rho and momentum j = sum c_i f_i.
+SHIP_LRM_HD void moments(const float g[Q], float& rho, float j[3]) {
+  float drho = 0.0f, jx = 0.0f, jy = 0.0f, jz = 0.0f;
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) {
+    drho += g[i];
+    jx += d3q19::cx(i) * g[i];
+    jy += d3q19::cy(i) * g[i];
+    jz += d3q19::cz(i) * g[i];
+  }
+  rho = 1.0f + drho;
+  j[0] = jx;
+  j[1] = jy;
+  j[2] = jz;
+}
+
+// Macroscopic state including the Guo half-force shift u = (j + F/2) / rho (Guo, Zheng & Shi
+// 2002, Phys. Rev. E 65, 046308, eq. 20; thesis 6.1.2 "u* = u + 0.5 dt F").
+SHIP_LRM_HD Macro macro_from_populations(const float g[Q], const float force[3]) {
+  Macro m;
+  float j[3];
+  moments(g, m.rho, j);
+  const float inv = 1.0f / m.rho;
+  for (int a = 0; a < 3; ++a) m.u[a] = (j[a] + 0.5f * force[a]) * inv;
+  return m;
+}
+
+// Norm sqrt(Pi:Pi) of the non-equilibrium momentum flux Pi_ab = sum c_a c_b (f - f_eq)
+// (thesis eq. 6.13).
+SHIP_LRM_HD float pi_neq_norm(const float g[Q], const Macro& m) {
+  float p[6] = {0, 0, 0, 0, 0, 0};  // xx yy zz xy xz yz
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) {
+    const float ne = g[i] - equilibrium(i, m.rho, m.u);
+    const float x = d3q19::cx(i), y = d3q19::cy(i), z = d3q19::cz(i);
+    p[0] += x * x * ne;
+    p[1] += y * y * ne;
+    p[2] += z * z * ne;
+    p[3] += x * y * ne;
+    p[4] += x * z * ne;
+    p[5] += y * z * ne;
+  }
+  return sqrtf(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + 2.0f * (p[3] * p[3] + p[4] * p[4] + p[5] * p[5]));
+}
+
+// Relaxation frequency with the Smagorinsky sub-grid model (thesis 6.1.2, equations after 6.13):
+//   S = (sqrt(nu^2 + 18 s^2 |Pi|) - nu) / (6 s^2),  omega = 1 / (3 (nu + s^2 S) + 1/2),
+// with |Pi| taken per unit density (Hou et al. 1996, J. Comput. Phys. 118, 329).
+SHIP_LRM_HD float smagorinsky_omega(float nu, float s, float pi_norm_per_rho) {
+  const float s2 = s * s;
+  const float S = (sqrtf(nu * nu + 18.0f * s2 * pi_norm_per_rho) - nu) / (6.0f * s2);
+  return 1.0f / (3.0f * (nu + s2 * S) + 0.5f);
+}
+
+// BGK collision (thesis eq. 6.9) with Smagorinsky (kSmagorinsky, s = p.smagorinsky) and Guo
+// forcing (force density F per unit volume, lattice units). Overwrites g with the post-collision
+// populations and returns the macroscopic state that entered the equilibrium. The model choice is
+// a template parameter so that the bulk loop has no branches and vectorises.
+template <bool kSmagorinsky, bool kForced = true>
+SHIP_LRM_HD Macro collide(float g[Q], const float force[3], const CollisionParams& p) {
+  Macro m;
+  if (kForced) {
+    m = macro_from_populations(g, force);
+  } else {
+    moments(g, m.rho, m.u);
+    const float inv = 1.0f / m.rho;
+    for (int a = 0; a < 3; ++a) m.u[a] *= inv;
+  }
+  const float omega = kSmagorinsky ? smagorinsky_omega(p.nu, p.smagorinsky, pi_neq_norm(g, m) / m.rho) : omega_from_nu(p.nu);
+  const float guo = 1.0f - 0.5f * omega;
+  const float uF = m.u[0] * force[0] + m.u[1] * force[1] + m.u[2] * force[2];
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) {
+    const float cx = d3q19::cx(i), cy = d3q19::cy(i), cz = d3q19::cz(i);
+    const float cu = cx * m.u[0] + cy * m.u[1] + cz * m.u[2];
+    const float cF = cx * force[0] + cy * force[1] + cz * force[2];
+    // Guo et al. 2002 eq. 20: (1 - omega/2) w_i [ (c_i - u)/cs^2 + (c_i.u) c_i / cs^4 ] . F
+    const float source = kForced ? guo * d3q19::w(i) * (3.0f * (cF - uF) + 9.0f * cu * cF) : 0.0f;
+    g[i] += omega * (equilibrium(i, m.rho, m.u) - g[i]) + source;
+  }
+  return m;
+}
+
+// Collision with the model chosen at run time (cells off the vectorised bulk path).
+SHIP_LRM_HD Macro collide(float g[Q], const float force[3], const CollisionParams& p) {
+  return p.smagorinsky > 0.0f ? collide<true>(g, force, p) : collide<false>(g, force, p);
+}
+
+// ---- Open boundaries (thesis 6.1.3) ---------------------------------------------------------
+// A boundary cell has one outward normal axis `axis` with sign `sgn` (+1 or -1). Populations
+// with c.n < 0 come from outside and are unknown; those with c.n > 0 leave the domain.
+
+// K = sum_{c.n=0} f + 2 sum_{c.n>0} f, so that rho (1 + u.n) = K (Zou & He 1997, Phys. Fluids 9,
+// 1591; thesis "rho^Wall = (2 rho^+ + rho^0) / (1 + u_n)").
+SHIP_LRM_HD float zou_he_known_sum(const float g[Q], int axis, int sgn) {
+  float k = 1.0f;  // sum of the shifted weights of these populations is exactly 1
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) {
+    const int cn = d3q19::c(i, axis) * sgn;
+    k += (cn == 0 ? 1.0f : (cn > 0 ? 2.0f : 0.0f)) * g[i];
+  }
+  return k;
+}
+
+// Tangential momentum at an outlet from the known populations, mirroring the outgoing ones onto
+// the unknown ones as the density formula does: j_t = sum_{c.n=0} c_t f + 2 sum_{c.n>0} c_t f.
+SHIP_LRM_HD float zou_he_tangential_momentum(const float g[Q], int axis, int sgn, int t) {
+  float j = 0.0f;
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) {
+    const int cn = d3q19::c(i, axis) * sgn;
+    j += (cn == 0 ? 1.0f : (cn > 0 ? 2.0f : 0.0f)) * d3q19::c(i, t) * g[i];
+  }
+  return j;
+}
+
+// Reconstruction of all populations from rho, u and the strain rate S = (grad u + grad u^T)/2
+// (Latt, Chopard, Malaspinas, Deville & Michler 2008, Phys. Rev. E 77, 056703, "FD" scheme;
+// thesis: g_i = f_eq(rho,u) - rho w_i / (cs^2 omega) Q_i : S, Q_i = c_i c_i - cs^2 I).
+// S is given as xx yy zz xy xz yz.
+SHIP_LRM_HD void reconstruct_fd(float g[Q], float rho, const float u[3], const float S[6], float omega) {
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) {
+    const float x = d3q19::cx(i), y = d3q19::cy(i), z = d3q19::cz(i);
+    const float qs = (x * x - d3q19::cs2) * S[0] + (y * y - d3q19::cs2) * S[1] + (z * z - d3q19::cs2) * S[2] +
+                     2.0f * (x * y * S[3] + x * z * S[4] + y * z * S[5]);
+    g[i] = equilibrium(i, rho, u) - 3.0f * rho * d3q19::w(i) / omega * qs;
+  }
+}
+
+// Non-reflecting impedance outlet, thesis eq. 6.15 (after Friedmann's impedance boundary):
+// the change of density and outward normal velocity over one step must satisfy
+//   cs^2 d(rho) + 1/2 rho d(u_n)^2 - rho cs d(u_n) = 0,
+// i.e. only an outgoing acoustic wave (p' = rho cs u') is admitted, together with the Zou-He
+// relation rho (1 + u_n) = K. Solved for rho by Newton-Raphson; returns rho.
+SHIP_LRM_HD float impedance_density(float K, float rho_prev, float un_prev) {
+  const float cs = 0.57735026919f;
+  float rho = rho_prev;
+  for (int it = 0; it < 6; ++it) {
+    const float du = K / rho - 1.0f - un_prev;
+    const float ddu = -K / (rho * rho);
+    const float G = d3q19::cs2 * (rho - rho_prev) + 0.5f * rho * du * du - rho * cs * du;
+    const float dG = d3q19::cs2 + 0.5f * du * du + rho * du * ddu - cs * du - rho * cs * ddu;
+    rho -= G / dG;
+  }
+  return rho;
+}
+
+// Non-equilibrium bounce-back of the unknown populations (Zou & He 1997): for c_i.n < 0,
+// f_i = f_i^eq + (f_opp(i) - f_opp(i)^eq).
+SHIP_LRM_HD void noneq_bounce_back(float g[Q], int axis, int sgn, float rho, const float u[3]) {
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) {
+    if (d3q19::c(i, axis) * sgn < 0) {
+      const int o = d3q19::opp(i);
+      g[i] = equilibrium(i, rho, u) + g[o] - equilibrium(o, rho, u);
+    }
+  }
+}
+
+}  // namespace ship_lrm::lbm

@@ -1,0 +1,52 @@
+// Cell and domain-face types of the lattice (thesis 6.1.3 boundary conditions).
+#pragma once
+
+#include <cstdint>
+
+namespace ship_lrm::lbm {
+
+// Per-cell type, one byte per cell.
+enum class CellType : std::uint8_t {
+  Fluid = 0,
+  Wall = 1,             // no-slip bounce-back wall (halfway, Ladd 1994)
+  SlipWall = 2,         // specular (slip) wall; the cell's tag holds the wall normal (axis code)
+  MovingWall = 3,       // no-slip wall moving with a rigid-body velocity; tag = index in the wall table
+  VelocityInlet = 4,    // open boundary cell: prescribed velocity, FD reconstruction (Latt et al. 2008)
+  PressureOutlet = 5,   // open boundary cell: prescribed density, FD reconstruction
+  ImpedanceOutlet = 6,  // open boundary cell: non-reflecting impedance outlet (thesis eq. 6.15)
+};
+
+// Bit set in the stored type byte of fluid cells that have a wall, a periodic wrap or the domain
+// edge among their 18 neighbours: they take the general (checked) streaming path.
+constexpr std::uint8_t kGeneralBit = 0x80;
+
+constexpr bool is_wall(CellType t) {
+  return t == CellType::Wall || t == CellType::SlipWall || t == CellType::MovingWall;
+}
+constexpr bool is_open_boundary(CellType t) {
+  return t == CellType::VelocityInlet || t == CellType::PressureOutlet || t == CellType::ImpedanceOutlet;
+}
+
+// Behaviour of one face of the box domain. Faces are numbered -x, +x, -y, +y, -z, +z (0..5).
+enum class FaceType : std::uint8_t {
+  Wall = 0,             // no-slip bounce-back half a cell outside the outermost layer
+  SlipWall = 1,         // slip (specular) wall half a cell outside the outermost layer
+  MovingWall = 2,       // no-slip wall with a tangential velocity (Couette lid)
+  Periodic = 3,         // wraps to the opposite face (both must be periodic)
+  VelocityInlet = 4,    // outermost layer holds velocity-inlet cells
+  PressureOutlet = 5,   // outermost layer holds pressure-outlet cells
+  ImpedanceOutlet = 6,  // outermost layer holds impedance-outlet cells
+};
+
+const char* to_string(FaceType t);
+const char* to_string(CellType t);
+
+// Rigid-body motion of a moving wall (lattice units; centre in cell coordinates):
+// u(p) = v + omega x (p - centre).
+struct WallMotion {
+  float v[3] = {0, 0, 0};
+  float omega[3] = {0, 0, 0};
+  float centre[3] = {0, 0, 0};
+};
+
+}  // namespace ship_lrm::lbm

@@ -1,0 +1,115 @@
+// Host-side description of a lattice: size, collision parameters, face and per-cell boundary
+// conditions. It validates the set-up (clear exceptions for bad input) and derives the cell lists
+// that the backends iterate over.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ship_lrm/lbm/cell_ops.hpp"
+#include "ship_lrm/lbm/cell_types.hpp"
+
+namespace ship_lrm::lbm {
+
+// Any invalid set-up: sizes, relaxation, boundary combinations, Mach limit, missing device.
+class ConfigError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+struct FaceCondition {
+  FaceType type = FaceType::Wall;
+  std::array<float, 3> velocity{0, 0, 0};  // MovingWall / VelocityInlet (lattice units)
+  float density = 1.0f;                      // PressureOutlet
+};
+
+struct LatticeConfig {
+  int nx = 0, ny = 0, nz = 0;
+  CollisionParams collision;
+  std::array<FaceCondition, 6> faces;  // -x, +x, -y, +y, -z, +z
+  std::array<float, 3> uniform_force{0, 0, 0};
+  // Divergence guard: stop when a cell's speed exceeds mach_guard * c_s or is not finite.
+  float mach_guard = 1.0f;
+  int guard_interval = 64;  // steps between guard checks (0: off)
+};
+
+// Largest lattice Mach number u/c_s accepted for a set-up's reference velocity. The thesis runs at
+// u_ref = 0.3 c_s (tables 6.2-6.4); compressibility errors grow with Ma^2.
+constexpr float kMaxSetupMach = 0.4f;
+
+// A contiguous run of bulk cells along x; row_class selects the neighbour offsets of its row
+// (rows on a periodic y or z face wrap around).
+struct Segment {
+  std::uint32_t first;
+  std::uint32_t count;
+  std::uint32_t row_class;
+};
+
+class Lattice {
+ public:
+  explicit Lattice(const LatticeConfig& cfg);
+
+  const LatticeConfig& config() const { return cfg_; }
+  int nx() const { return cfg_.nx; }
+  int ny() const { return cfg_.ny; }
+  int nz() const { return cfg_.nz; }
+  std::size_t cells() const { return static_cast<std::size_t>(cfg_.nx) * cfg_.ny * cfg_.nz; }
+  std::size_t index(int x, int y, int z) const {
+    return static_cast<std::size_t>(x) + static_cast<std::size_t>(cfg_.nx) * (static_cast<std::size_t>(y) + static_cast<std::size_t>(cfg_.ny) * z);
+  }
+
+  // Per-cell conditions (before the solver is made).
+  void set_wall(int x, int y, int z);
+  // Slip wall cell whose wall normal (pointing into the fluid) is +/- along axis.
+  void set_slip_wall(int x, int y, int z, int axis, int sign);
+  // Moving no-slip wall cell that belongs to rigid body `wall` (see add_wall_motion).
+  void set_moving_wall(int x, int y, int z, int wall);
+  int add_wall_motion(const WallMotion& m);
+  // Open boundary cells; only on a non-periodic face of the domain.
+  void set_velocity_inlet(int x, int y, int z, const std::array<float, 3>& u);
+  void set_pressure_outlet(int x, int y, int z, float rho);
+  void set_impedance_outlet(int x, int y, int z);
+
+  CellType type(int x, int y, int z) const { return static_cast<CellType>(type_[index(x, y, z)]); }
+
+  // Derived lists (valid after finalize(), which the solver calls).
+  void finalize();
+  bool finalized() const { return finalized_; }
+  const std::vector<std::uint8_t>& types() const { return type_; }  // with kGeneralBit
+  const std::vector<std::uint8_t>& tags() const { return tag_; }
+  const std::vector<WallMotion>& wall_motions() const { return walls_; }
+  const std::vector<Segment>& bulk_segments() const { return segments_; }
+  const std::vector<std::uint32_t>& general_cells() const { return general_; }
+  // Neighbour offsets of bulk cells, Q per row class (see row_class in lattice_view.hpp).
+  const std::vector<std::int64_t>& row_offsets() const { return row_offsets_; }
+  const std::vector<std::uint32_t>& boundary_cells() const { return bnd_cell_; }
+  const std::vector<std::uint8_t>& boundary_normals() const { return bnd_normal_; }
+  const std::vector<float>& boundary_values() const { return bnd_value_; }  // 4 per boundary cell
+  const std::vector<std::uint32_t>& support_cells() const { return support_; }
+  const std::vector<std::int32_t>& support_boundary_index() const { return support_bnd_; }
+  std::size_t fluid_cells() const { return fluid_count_; }
+
+ private:
+  void check_cell(int x, int y, int z, const char* what) const;
+  void set_open(int x, int y, int z, CellType t, const std::array<float, 4>& value);
+  int open_normal(int x, int y, int z) const;  // outward normal code, or -1 if not on an open-able face
+
+  LatticeConfig cfg_;
+  std::vector<std::uint8_t> type_, tag_;
+  std::vector<std::pair<std::uint32_t, std::array<float, 4>>> explicit_values_;  // per-cell open values
+  std::vector<WallMotion> walls_;
+  bool finalized_ = false;
+  std::vector<Segment> segments_;
+  std::vector<std::uint32_t> general_, bnd_cell_, support_;
+  std::vector<std::int32_t> support_bnd_;
+  std::vector<std::uint8_t> bnd_normal_;
+  std::vector<std::int64_t> row_offsets_;
+  std::vector<float> bnd_value_;
+  std::size_t fluid_count_ = 0;
+};
+
+}  // namespace ship_lrm::lbm

@@ -1,0 +1,336 @@
+// The device-copyable view of a lattice and the per-cell streaming, boundary and update
+// operations shared by the CPU and CUDA backends (one source of physics).
+//
+// Streaming: in-place AA pattern (Bailey, Myre, Walsh, Lilja & Saar 2009, "Accelerating lattice
+// Boltzmann fluid flow simulations using graphics processors", ICPP) with a single population
+// array; the thesis (6.1.2) uses the related shift-and-swap scheme. With G[i][x] the stored value:
+//   even step at x: read G[i][x], collide, write G[opp(i)][x]          (no neighbour access)
+//   odd step at x:  read G[opp(i)][x - c_i], collide, write G[i][x + c_i]
+// Each cell owns disjoint memory in both steps, so cells update in any order, in parallel.
+// Walls use halfway bounce-back applied during the odd step's read and write (Ladd 1994,
+// J. Fluid Mech. 271, 285; moving wall term 2 w_i rho_w c_i.u_w / cs^2 of Ladd's eq. 3.2).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "ship_lrm/lbm/cell_ops.hpp"
+#include "ship_lrm/lbm/cell_types.hpp"
+
+namespace ship_lrm::lbm {
+
+struct LatticeView {
+  int n[3] = {0, 0, 0};
+  std::size_t ncells = 0;
+  pop_t* g = nullptr;                 // Q * ncells, SoA: g[i * ncells + cell]
+  const std::uint8_t* type = nullptr;  // CellType, with kGeneralBit on checked fluid cells
+  const std::uint8_t* tag = nullptr;   // slip-wall axis code (axis*2 + (normal>0)) / wall index
+  const float* force = nullptr;        // optional force density field, SoA 3 * ncells
+  float uniform_force[3] = {0, 0, 0};
+  std::uint8_t face[6] = {0, 0, 0, 0, 0, 0};  // FaceType per face
+  float face_velocity[6][3] = {};             // wall velocity of MovingWall faces
+  const WallMotion* walls = nullptr;
+  CollisionParams params;
+  // Open boundary cells (thesis 6.1.3), numbered b = 0 .. nbnd-1.
+  int nbnd = 0;
+  const std::uint32_t* bnd_cell = nullptr;  // cell index of b
+  const std::uint8_t* bnd_normal = nullptr;  // outward normal code axis*2 + (sign > 0)
+  const float* bnd_value = nullptr;          // 4 * nbnd: inlet velocity (3) | outlet density ([0])
+  float* aux = nullptr;  // macroscopic state of open-boundary support cells, SoA 4 * ncells
+  const std::int64_t* row_offsets = nullptr;  // 9 * Q neighbour offsets of bulk cells per row class
+};
+
+// Row class of a bulk cell: y and z each first (0), interior (1) or last (2) row; rows on a
+// periodic face reach their neighbours by a wrapped offset, the same for the whole row.
+SHIP_LRM_HD int row_class(const int n[3], int y, int z) {
+  return 3 * (y == 0 ? 0 : (y == n[1] - 1 ? 2 : 1)) + (z == 0 ? 0 : (z == n[2] - 1 ? 2 : 1));
+}
+
+SHIP_LRM_HD std::size_t cell_index(const LatticeView& v, int x, int y, int z) {
+  return static_cast<std::size_t>(x) + static_cast<std::size_t>(v.n[0]) * (static_cast<std::size_t>(y) + static_cast<std::size_t>(v.n[1]) * z);
+}
+SHIP_LRM_HD pop_t& pop(const LatticeView& v, int i, std::size_t cell) { return v.g[static_cast<std::size_t>(i) * v.ncells + cell]; }
+
+// Force on a cell: none, the uniform force only, or uniform plus the per-cell field.
+enum ForceMode : int { kNoForce = 0, kUniformForce = 1, kForceField = 2 };
+
+template <int kForce>
+SHIP_LRM_HD void force_at(const LatticeView& v, std::size_t cell, float F[3]) {
+  for (int a = 0; a < 3; ++a)
+    F[a] = (kForce == kNoForce ? 0.0f : v.uniform_force[a]) + (kForce == kForceField ? v.force[a * v.ncells + cell] : 0.0f);
+}
+SHIP_LRM_HD void force_at(const LatticeView& v, std::size_t cell, float F[3]) {
+  v.force ? force_at<kForceField>(v, cell, F) : force_at<kUniformForce>(v, cell, F);
+}
+SHIP_LRM_HD int force_mode(const LatticeView& v) {
+  return v.force ? kForceField : ((v.uniform_force[0] != 0.0f || v.uniform_force[1] != 0.0f || v.uniform_force[2] != 0.0f) ? kUniformForce : kNoForce);
+}
+
+// What lies at (x,y,z) + d: either a fluid-like cell (returns true, sets nb) or a wall, for which
+// flip (bit a: reverse component a of the reflected direction) and the wall velocity uw are set.
+SHIP_LRM_HD bool neighbour(const LatticeView& v, int x, int y, int z, int dx, int dy, int dz, std::size_t& nb, int& flip, float uw[3]) {
+  int p[3] = {x + dx, y + dy, z + dz};
+  int outside = 0, slip_axes = 0;
+  bool all_slip = true;
+  uw[0] = uw[1] = uw[2] = 0.0f;
+  for (int a = 0; a < 3; ++a) {
+    if (p[a] >= 0 && p[a] < v.n[a]) continue;
+    const int f = 2 * a + (p[a] >= v.n[a] ? 1 : 0);
+    const auto ft = static_cast<FaceType>(v.face[f]);
+    if (ft == FaceType::Periodic) {
+      p[a] = (p[a] + v.n[a]) % v.n[a];
+      continue;
+    }
+    ++outside;
+    if (ft == FaceType::SlipWall) {
+      slip_axes |= 1 << a;
+    } else {
+      all_slip = false;
+      if (ft == FaceType::MovingWall)
+        for (int k = 0; k < 3; ++k) uw[k] = v.face_velocity[f][k];
+    }
+  }
+  if (outside) {
+    flip = all_slip ? slip_axes : 7;
+    return false;
+  }
+  nb = static_cast<std::size_t>(p[0]) + static_cast<std::size_t>(v.n[0]) * (static_cast<std::size_t>(p[1]) + static_cast<std::size_t>(v.n[1]) * p[2]);
+  const auto t = static_cast<CellType>(v.type[nb] & ~kGeneralBit);
+  if (!is_wall(t)) return true;
+  flip = 7;
+  if (t == CellType::SlipWall) {
+    flip = 1 << (v.tag[nb] >> 1);
+  } else if (t == CellType::MovingWall) {
+    const WallMotion& m = v.walls[v.tag[nb]];
+    // velocity at the link midpoint (halfway bounce-back)
+    const float r[3] = {x + 0.5f * dx - m.centre[0], y + 0.5f * dy - m.centre[1], z + 0.5f * dz - m.centre[2]};
+    uw[0] = m.v[0] + m.omega[1] * r[2] - m.omega[2] * r[1];
+    uw[1] = m.v[1] + m.omega[2] * r[0] - m.omega[0] * r[2];
+    uw[2] = m.v[2] + m.omega[0] * r[1] - m.omega[1] * r[0];
+  }
+  return false;
+}
+
+// Direction obtained by reversing the components of c_i selected by flip; no-slip if the result
+// would not point back into the fluid (e.g. a slip mirror of a direction parallel to the wall).
+SHIP_LRM_HD int reflect(int i, int flip) {
+  if (flip == 7) return d3q19::opp(i);
+  const int x = (flip & 1) ? -d3q19::cx(i) : d3q19::cx(i);
+  const int y = (flip & 2) ? -d3q19::cy(i) : d3q19::cy(i);
+  const int z = (flip & 4) ? -d3q19::cz(i) : d3q19::cz(i);
+  const int k = d3q19::index_of(x, y, z);
+  return k == i ? d3q19::opp(i) : k;
+}
+
+// Moving-wall momentum term for the population arriving with direction d (rho_w = 1).
+SHIP_LRM_HD float wall_term(int d, const float uw[3]) {
+  return 6.0f * d3q19::w(d) * (d3q19::cx(d) * uw[0] + d3q19::cy(d) * uw[1] + d3q19::cz(d) * uw[2]);
+}
+
+// Pre-collision populations of cell (x,y,z) for the step of the given parity.
+template <bool kOdd>
+SHIP_LRM_HD void gather(const LatticeView& v, int x, int y, int z, std::size_t c, float g[Q]) {
+  if (!kOdd) {
+    SHIP_LRM_UNROLL
+    for (int i = 0; i < Q; ++i) g[i] = load_pop(pop(v, i, c));
+    return;
+  }
+  g[0] = load_pop(pop(v, 0, c));
+  for (int i = 1; i < Q; ++i) {
+    std::size_t nb;
+    int flip;
+    float uw[3];
+    if (neighbour(v, x, y, z, -d3q19::cx(i), -d3q19::cy(i), -d3q19::cz(i), nb, flip, uw)) {
+      g[i] = load_pop(pop(v, d3q19::opp(i), nb));
+    } else {
+      // arriving from a wall: the outgoing population k (reflected onto i) stored by the even step
+      const int k = reflect(i, flip);
+      g[i] = load_pop(pop(v, d3q19::opp(k), c)) + wall_term(i, uw);
+    }
+  }
+}
+
+// Store post-collision populations of cell (x,y,z) for the step of the given parity.
+template <bool kOdd>
+SHIP_LRM_HD void scatter(const LatticeView& v, int x, int y, int z, std::size_t c, const float g[Q]) {
+  if (!kOdd) {
+    SHIP_LRM_UNROLL
+    for (int i = 0; i < Q; ++i) pop(v, d3q19::opp(i), c) = store_pop(g[i]);
+    return;
+  }
+  pop(v, 0, c) = store_pop(g[0]);
+  for (int i = 1; i < Q; ++i) {
+    std::size_t nb;
+    int flip;
+    float uw[3];
+    if (neighbour(v, x, y, z, d3q19::cx(i), d3q19::cy(i), d3q19::cz(i), nb, flip, uw)) {
+      pop(v, i, nb) = store_pop(g[i]);
+    } else {
+      const int k = reflect(i, flip);  // comes back into this cell with direction k
+      pop(v, k, c) = store_pop(g[i] + wall_term(k, uw));
+    }
+  }
+}
+
+// Bulk cells: all 18 neighbours are fluid-like cells, reached by the offsets `off` of the cell's
+// row class (no checks).
+template <bool kOdd, bool kSmagorinsky, int kForce>
+SHIP_LRM_HD void update_bulk_cell(const LatticeView& v, std::size_t c, const std::int64_t* off) {
+  float g[Q];
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) g[i] = kOdd ? load_pop(pop(v, d3q19::opp(i), c - off[i])) : load_pop(pop(v, i, c));
+  float F[3];
+  force_at<kForce>(v, c, F);
+  collide<kSmagorinsky, kForce != kNoForce>(g, F, v.params);
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) {
+    if (kOdd)
+      pop(v, i, c + off[i]) = store_pop(g[i]);
+    else
+      pop(v, d3q19::opp(i), c) = store_pop(g[i]);
+  }
+}
+
+SHIP_LRM_HD void cell_coords(const LatticeView& v, std::size_t c, int& x, int& y, int& z) {
+  x = static_cast<int>(c % v.n[0]);
+  const std::size_t r = c / v.n[0];
+  y = static_cast<int>(r % v.n[1]);
+  z = static_cast<int>(r / v.n[1]);
+}
+
+// Fluid cells near walls, periodic wraps or the domain edge.
+template <bool kOdd>
+SHIP_LRM_HD void update_general_cell(const LatticeView& v, std::size_t c) {
+  int x, y, z;
+  cell_coords(v, c, x, y, z);
+  float g[Q];
+  gather<kOdd>(v, x, y, z, c, g);
+  float F[3];
+  force_at(v, c, F);
+  collide(g, F, v.params);
+  scatter<kOdd>(v, x, y, z, c, g);
+}
+
+// ---- Open boundaries -------------------------------------------------------------------------
+
+SHIP_LRM_HD Macro load_aux(const LatticeView& v, std::size_t c) {
+  Macro m;
+  m.rho = v.aux[c];
+  for (int a = 0; a < 3; ++a) m.u[a] = v.aux[(a + 1) * v.ncells + c];
+  return m;
+}
+SHIP_LRM_HD void store_aux(const LatticeView& v, std::size_t c, const Macro& m) {
+  v.aux[c] = m.rho;
+  for (int a = 0; a < 3; ++a) v.aux[(a + 1) * v.ncells + c] = m.u[a];
+}
+
+// Macroscopic state at open-boundary cell b from its gathered populations (unknown populations
+// hold bounce-back placeholders and are not used), thesis 6.1.3. prev: the state one step ago.
+SHIP_LRM_HD Macro boundary_macro(const LatticeView& v, int b, const float g[Q], const Macro& prev) {
+  const int axis = v.bnd_normal[b] >> 1;
+  const int sgn = (v.bnd_normal[b] & 1) ? 1 : -1;
+  const auto t = static_cast<CellType>(v.type[v.bnd_cell[b]] & ~kGeneralBit);
+  const float K = zou_he_known_sum(g, axis, sgn);
+  Macro m;
+  if (t == CellType::VelocityInlet) {
+    for (int a = 0; a < 3; ++a) m.u[a] = v.bnd_value[4 * b + a];
+    m.rho = K / (1.0f + sgn * m.u[axis]);
+    return m;
+  }
+  if (t == CellType::PressureOutlet)
+    m.rho = v.bnd_value[4 * b];
+  else
+    m.rho = impedance_density(K, prev.rho, sgn * prev.u[axis]);
+  for (int a = 0; a < 3; ++a) m.u[a] = (a == axis) ? sgn * (K / m.rho - 1.0f) : zou_he_tangential_momentum(g, axis, sgn, a) / m.rho;
+  return m;
+}
+
+// Is (x,y,z)+d a fluid-like cell whose aux state is maintained? (Every fluid-like cell within
+// two cells along an axis of an open-boundary cell is in the support set.)
+SHIP_LRM_HD bool support_cell(const LatticeView& v, int x, int y, int z, int axis, int d, std::size_t& nb) {
+  int p[3] = {x, y, z};
+  p[axis] += d;
+  if (p[axis] < 0 || p[axis] >= v.n[axis]) {
+    if (static_cast<FaceType>(v.face[2 * axis + (p[axis] >= 0 ? 1 : 0)]) != FaceType::Periodic) return false;
+    p[axis] = (p[axis] + v.n[axis]) % v.n[axis];
+  }
+  nb = cell_index(v, p[0], p[1], p[2]);
+  return !is_wall(static_cast<CellType>(v.type[nb] & ~kGeneralBit));
+}
+
+// Velocity gradient du_a/dx_b at cell (x,y,z) from aux by finite differences: central where both
+// neighbours exist, else one-sided of second order where two cells exist, else first order.
+SHIP_LRM_HD void velocity_gradient(const LatticeView& v, int x, int y, int z, std::size_t c, float grad[3][3]) {
+  for (int b = 0; b < 3; ++b) {
+    std::size_t p1 = 0, m1 = 0, p2 = 0, m2 = 0;
+    const bool hp1 = support_cell(v, x, y, z, b, 1, p1), hm1 = support_cell(v, x, y, z, b, -1, m1);
+    for (int a = 0; a < 3; ++a) {
+      const float* u = v.aux + (a + 1) * v.ncells;
+      float d = 0.0f;
+      if (hp1 && hm1)
+        d = 0.5f * (u[p1] - u[m1]);
+      else if (hp1)
+        d = support_cell(v, x, y, z, b, 2, p2) ? 0.5f * (-3.0f * u[c] + 4.0f * u[p1] - u[p2]) : u[p1] - u[c];
+      else if (hm1)
+        d = support_cell(v, x, y, z, b, -2, m2) ? 0.5f * (3.0f * u[c] - 4.0f * u[m1] + u[m2]) : u[c] - u[m1];
+      grad[a][b] = d;
+    }
+  }
+}
+
+// Pass 1 of a step with open boundaries: state of support cell c (b >= 0 for boundary cells).
+template <bool kOdd>
+SHIP_LRM_HD void update_support_macro(const LatticeView& v, std::size_t c, int b) {
+  int x, y, z;
+  cell_coords(v, c, x, y, z);
+  float g[Q];
+  gather<kOdd>(v, x, y, z, c, g);
+  if (b >= 0) {
+    store_aux(v, c, boundary_macro(v, b, g, load_aux(v, c)));
+  } else {
+    float F[3];
+    force_at(v, c, F);
+    store_aux(v, c, macro_from_populations(g, F));
+  }
+}
+
+// Pass 2: update of open-boundary cell b (after pass 1 over all support cells).
+template <bool kOdd>
+SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
+  const std::size_t c = v.bnd_cell[b];
+  int x, y, z;
+  cell_coords(v, c, x, y, z);
+  float g[Q];
+  gather<kOdd>(v, x, y, z, c, g);
+  const Macro m = load_aux(v, c);
+  const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
+  if (t == CellType::ImpedanceOutlet) {
+    noneq_bounce_back(g, v.bnd_normal[b] >> 1, (v.bnd_normal[b] & 1) ? 1 : -1, m.rho, m.u);
+  } else {
+    float grad[3][3];
+    velocity_gradient(v, x, y, z, c, grad);
+    const float S[6] = {grad[0][0], grad[1][1], grad[2][2], 0.5f * (grad[0][1] + grad[1][0]), 0.5f * (grad[0][2] + grad[2][0]),
+                        0.5f * (grad[1][2] + grad[2][1])};
+    reconstruct_fd(g, m.rho, m.u, S, omega_from_nu(v.params.nu));
+  }
+  float F[3];
+  force_at(v, c, F);
+  collide(g, F, v.params);
+  scatter<kOdd>(v, x, y, z, c, g);
+}
+
+// Macroscopic state of a fluid-like cell for output, valid between steps (kOdd: parity of the
+// next step). Open-boundary cells report the state their boundary condition imposed last step.
+template <bool kOdd>
+SHIP_LRM_HD Macro cell_macro(const LatticeView& v, std::size_t c) {
+  if (is_open_boundary(static_cast<CellType>(v.type[c] & ~kGeneralBit))) return load_aux(v, c);
+  int x, y, z;
+  cell_coords(v, c, x, y, z);
+  float g[Q];
+  gather<kOdd>(v, x, y, z, c, g);
+  float F[3];
+  force_at(v, c, F);
+  return macro_from_populations(g, F);
+}
+
+}  // namespace ship_lrm::lbm

@@ -1,0 +1,82 @@
+// Run-time selectable LBM solver (CPU/OpenMP or CUDA) over a Lattice description.
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "ship_lrm/lbm/lattice.hpp"
+#include "ship_lrm/lbm/lattice_view.hpp"
+
+namespace ship_lrm::lbm {
+
+enum class Backend { Cpu, Cuda, Auto };
+Backend parse_backend(const std::string& s);  // "cpu", "cuda", "auto"; ConfigError otherwise
+const char* to_string(Backend b);
+bool cuda_available();  // compiled with CUDA and a device is present
+
+// Raised by the divergence guard: names the step and the first offending cell.
+class DivergenceError : public std::runtime_error {
+ public:
+  DivergenceError(long step, int x, int y, int z, float speed, float limit);
+  long step;
+  int x, y, z;
+};
+
+// Macroscopic fields, one value (rho) or three (u, interleaved x y z) per cell, x fastest.
+struct Fields {
+  std::vector<float> rho;
+  std::vector<float> u;
+};
+
+class Solver {
+ public:
+  virtual ~Solver() = default;
+  Solver(const Solver&) = delete;
+  Solver& operator=(const Solver&) = delete;
+
+  virtual const char* backend_name() const = 0;
+  const Lattice& lattice() const { return lattice_; }
+  long steps_done() const { return steps_; }
+
+  // Initialise every fluid cell at equilibrium with the given density and velocity (per cell,
+  // sizes cells() and 3*cells(); empty vectors mean rho = 1, u = 0).
+  void initialize(const std::vector<float>& rho, const std::vector<float>& u);
+  // Advance n time steps. Throws DivergenceError if the guard trips.
+  void step(long n = 1);
+  // Density and velocity of every cell (walls: rho = 1, u = 0).
+  Fields fields();
+  // Force density field (3 per cell, interleaved; empty clears it), added to the uniform force.
+  virtual void set_force_field(const std::vector<float>& f) = 0;
+  void set_uniform_force(const std::array<float, 3>& f);
+  // Values of the open-boundary cells, 4 per cell in lattice().boundary_cells() order:
+  // velocity inlet (ux, uy, uz, -), pressure outlet (rho, -, -, -), impedance (ignored).
+  virtual void set_boundary_values(const std::vector<float>& values) = 0;
+  // Check the guard now (NaN / speed above mach_guard * c_s); throws DivergenceError.
+  void check_divergence();
+  // Raw populations (shifted, g = f - w) for tests: Q * cells, SoA.
+  virtual std::vector<float> populations() = 0;
+  // Wait for queued device work (timing); no-op on the CPU.
+  virtual void synchronize() {}
+
+ protected:
+  explicit Solver(Lattice lattice);
+  // Backend work: one step of the given parity, field extraction and equilibrium initialisation.
+  virtual void do_step(bool odd) = 0;
+  virtual void do_fields(bool next_odd, Fields& out) = 0;
+  virtual void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) = 0;
+  virtual void sync_view() = 0;  // after view_ parameters changed on the host
+  // Index of the first cell whose speed is non-finite or above limit, or -1.
+  virtual long long do_find_divergent(bool next_odd, float limit) = 0;
+
+  Lattice lattice_;
+  LatticeView view_;  // host copy of the view; device pointers in the CUDA backend
+  long steps_ = 0;
+};
+
+std::unique_ptr<Solver> make_solver(Lattice lattice, Backend backend);
+std::unique_ptr<Solver> make_cpu_solver(Lattice lattice);
+std::unique_ptr<Solver> make_cuda_solver(Lattice lattice);  // ConfigError without CUDA
+
+}  // namespace ship_lrm::lbm

@@ -1,0 +1,166 @@
+// CPU backend: OpenMP over the cell lists of the Lattice, per-cell physics from lattice_view.hpp.
+#include <cmath>
+#include <limits>
+
+#include "ship_lrm/lbm/solver.hpp"
+
+namespace ship_lrm::lbm {
+namespace {
+
+class CpuSolver final : public Solver {
+ public:
+  explicit CpuSolver(Lattice lattice) : Solver(std::move(lattice)) {
+    const std::size_t n = lattice_.cells();
+    g_.assign(Q * n, store_pop(0.0f));
+    if (!lattice_.boundary_cells().empty()) aux_.assign(4 * n, 0.0f);
+    bnd_value_ = lattice_.boundary_values();
+    sync_view();
+    do_initialize({}, {});
+  }
+  const char* backend_name() const override { return "cpu"; }
+
+  void set_force_field(const std::vector<float>& f) override {
+    const std::size_t n = lattice_.cells();
+    if (f.empty()) {
+      force_.clear();
+    } else {
+      if (f.size() != 3 * n) throw ConfigError("set_force_field: expected 3 values per cell");
+      force_.resize(3 * n);
+      for (std::size_t c = 0; c < n; ++c)
+        for (int a = 0; a < 3; ++a) {
+          if (!std::isfinite(f[3 * c + a])) throw ConfigError("set_force_field: force is not finite");
+          force_[a * n + c] = f[3 * c + a];
+        }
+    }
+    sync_view();
+  }
+
+  void set_boundary_values(const std::vector<float>& values) override {
+    if (values.size() != bnd_value_.size()) throw ConfigError("set_boundary_values: expected 4 values per open-boundary cell");
+    for (float v : values)
+      if (!std::isfinite(v)) throw ConfigError("set_boundary_values: value is not finite");
+    bnd_value_ = values;
+    sync_view();
+  }
+
+  std::vector<float> populations() override {
+    std::vector<float> out(g_.size());
+    for (std::size_t k = 0; k < g_.size(); ++k) out[k] = load_pop(g_[k]);
+    return out;
+  }
+
+ protected:
+  void sync_view() override {
+    view_.g = g_.data();
+    view_.type = lattice_.types().data();
+    view_.tag = lattice_.tags().data();
+    view_.walls = lattice_.wall_motions().data();
+    view_.force = force_.empty() ? nullptr : force_.data();
+    view_.bnd_cell = lattice_.boundary_cells().data();
+    view_.bnd_normal = lattice_.boundary_normals().data();
+    view_.bnd_value = bnd_value_.data();
+    view_.aux = aux_.empty() ? nullptr : aux_.data();
+    view_.row_offsets = lattice_.row_offsets().data();
+  }
+
+  void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) override {
+    const std::size_t n = lattice_.cells();
+    const LatticeView& v = view_;
+#pragma omp parallel for schedule(static)
+    for (std::size_t c = 0; c < n; ++c) {
+      Macro m;
+      if (!rho.empty()) m.rho = rho[c];
+      if (!u.empty())
+        for (int a = 0; a < 3; ++a) m.u[a] = u[3 * c + a];
+      for (int i = 0; i < Q; ++i) pop(v, i, c) = store_pop(equilibrium(i, m.rho, m.u));
+      if (v.aux) store_aux(v, c, m);
+    }
+    // open-boundary cells start from their prescribed state
+    const auto& cells = lattice_.boundary_cells();
+    for (int b = 0; b < v.nbnd; ++b) {
+      const auto t = static_cast<CellType>(lattice_.types()[cells[b]] & ~kGeneralBit);
+      Macro m = load_aux(v, cells[b]);
+      if (t == CellType::VelocityInlet)
+        for (int a = 0; a < 3; ++a) m.u[a] = bnd_value_[4 * b + a];
+      if (t == CellType::PressureOutlet) m.rho = bnd_value_[4 * b];
+      store_aux(v, cells[b], m);
+    }
+  }
+
+  template <bool kOdd, bool kSmagorinsky, int kForce>
+  void run_step() {
+    const LatticeView& v = view_;
+    const auto& support = lattice_.support_cells();
+    const auto& support_b = lattice_.support_boundary_index();
+    const auto& segs = lattice_.bulk_segments();
+    const auto& general = lattice_.general_cells();
+    const long ns = static_cast<long>(support.size()), nseg = static_cast<long>(segs.size()), ng = static_cast<long>(general.size());
+#pragma omp parallel
+    {
+#pragma omp for schedule(static)
+      for (long k = 0; k < ns; ++k) update_support_macro<kOdd>(v, support[k], support_b[k]);
+      // implicit barrier: every support state is known before any population is overwritten
+#pragma omp for schedule(static) nowait
+      for (long s = 0; s < nseg; ++s) {
+        const std::size_t first = segs[s].first, last = first + segs[s].count;
+        std::int64_t off[Q];
+        for (int i = 0; i < Q; ++i) off[i] = v.row_offsets[segs[s].row_class * Q + i];
+#pragma omp simd
+        for (std::size_t c = first; c < last; ++c) update_bulk_cell<kOdd, kSmagorinsky, kForce>(v, c, off);
+      }
+#pragma omp for schedule(static) nowait
+      for (long k = 0; k < ng; ++k) update_general_cell<kOdd>(v, general[k]);
+#pragma omp for schedule(static)
+      for (int b = 0; b < v.nbnd; ++b) update_boundary_cell<kOdd>(v, b);
+    }
+  }
+
+  template <bool kOdd>
+  void run_step_dispatch() {
+    const int force = force_mode(view_);
+    if (view_.params.smagorinsky > 0.0f)
+      force == kNoForce ? run_step<kOdd, true, kNoForce>() : (force == kUniformForce ? run_step<kOdd, true, kUniformForce>() : run_step<kOdd, true, kForceField>());
+    else
+      force == kNoForce ? run_step<kOdd, false, kNoForce>() : (force == kUniformForce ? run_step<kOdd, false, kUniformForce>() : run_step<kOdd, false, kForceField>());
+  }
+  void do_step(bool odd) override { odd ? run_step_dispatch<true>() : run_step_dispatch<false>(); }
+
+  template <bool kOdd>
+  Macro macro_at(std::size_t c) const {
+    const auto t = static_cast<CellType>(lattice_.types()[c] & ~kGeneralBit);
+    if (is_wall(t)) return Macro{};
+    return cell_macro<kOdd>(view_, c);
+  }
+
+  void do_fields(bool next_odd, Fields& out) override {
+    const long n = static_cast<long>(lattice_.cells());
+#pragma omp parallel for schedule(static)
+    for (long c = 0; c < n; ++c) {
+      const Macro m = next_odd ? macro_at<true>(c) : macro_at<false>(c);
+      out.rho[c] = m.rho;
+      for (int a = 0; a < 3; ++a) out.u[3 * c + a] = m.u[a];
+    }
+  }
+
+  long long do_find_divergent(bool next_odd, float limit) override {
+    const long n = static_cast<long>(lattice_.cells());
+    long long first = std::numeric_limits<long long>::max();
+#pragma omp parallel for schedule(static) reduction(min : first)
+    for (long c = 0; c < n; ++c) {
+      const Macro m = next_odd ? macro_at<true>(c) : macro_at<false>(c);
+      const float s2 = m.u[0] * m.u[0] + m.u[1] * m.u[1] + m.u[2] * m.u[2];
+      if (!(s2 <= limit * limit) || !std::isfinite(m.rho)) first = std::min<long long>(first, c);
+    }
+    return first == std::numeric_limits<long long>::max() ? -1 : first;
+  }
+
+ private:
+  std::vector<pop_t> g_;
+  std::vector<float> force_, aux_, bnd_value_;
+};
+
+}  // namespace
+
+std::unique_ptr<Solver> make_cpu_solver(Lattice lattice) { return std::make_unique<CpuSolver>(std::move(lattice)); }
+
+}  // namespace ship_lrm::lbm

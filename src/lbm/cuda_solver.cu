@@ -1,0 +1,306 @@
+// CUDA backend: the same per-cell functions as the CPU backend (lattice_view.hpp), one thread per
+// cell. Populations, cell types and boundary data live on the device; the host keeps the view.
+#include <cuda_runtime.h>
+
+#include <sstream>
+
+#include "ship_lrm/lbm/benchmark.hpp"
+#include "ship_lrm/lbm/solver.hpp"
+
+namespace ship_lrm::lbm {
+namespace {
+
+void check(cudaError_t e, const char* what) {
+  if (e != cudaSuccess) {
+    std::ostringstream s;
+    s << "CUDA error in " << what << ": " << cudaGetErrorString(e);
+    throw std::runtime_error(s.str());
+  }
+}
+
+template <typename T>
+class DeviceArray {
+ public:
+  DeviceArray() = default;
+  explicit DeviceArray(std::size_t n) { resize(n); }
+  ~DeviceArray() { cudaFree(p_); }
+  DeviceArray(const DeviceArray&) = delete;
+  DeviceArray& operator=(const DeviceArray&) = delete;
+  void resize(std::size_t n) {
+    cudaFree(p_);
+    p_ = nullptr;
+    n_ = n;
+    if (n) check(cudaMalloc(&p_, n * sizeof(T)), "cudaMalloc");
+  }
+  void upload(const std::vector<T>& h) {
+    if (h.size() != n_) resize(h.size());
+    if (n_) check(cudaMemcpy(p_, h.data(), n_ * sizeof(T), cudaMemcpyHostToDevice), "upload");
+  }
+  void download(std::vector<T>& h) const {
+    h.resize(n_);
+    if (n_) check(cudaMemcpy(h.data(), p_, n_ * sizeof(T), cudaMemcpyDeviceToHost), "download");
+  }
+  T* data() const { return p_; }
+  std::size_t size() const { return n_; }
+
+ private:
+  T* p_ = nullptr;
+  std::size_t n_ = 0;
+};
+
+constexpr int kBlock = 128;
+unsigned blocks(std::size_t n) { return static_cast<unsigned>((n + kBlock - 1) / kBlock); }
+
+template <bool kOdd>
+__global__ void support_kernel(LatticeView v, const std::uint32_t* cells, const std::int32_t* bidx, int n) {
+  const int k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k < n) update_support_macro<kOdd>(v, cells[k], bidx[k]);
+}
+
+template <bool kOdd, bool kSmagorinsky, int kForce>
+__global__ void fluid_kernel(LatticeView v) {
+  const std::size_t c = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (c >= v.ncells) return;
+  const std::uint8_t t = v.type[c];
+  if (t == static_cast<std::uint8_t>(CellType::Fluid)) {
+    int x, y, z;
+    cell_coords(v, c, x, y, z);
+    update_bulk_cell<kOdd, kSmagorinsky, kForce>(v, c, v.row_offsets + Q * row_class(v.n, y, z));
+  }
+  else if (t == (static_cast<std::uint8_t>(CellType::Fluid) | kGeneralBit))
+    update_general_cell<kOdd>(v, c);
+}
+
+template <bool kOdd>
+__global__ void boundary_kernel(LatticeView v) {
+  const int b = blockIdx.x * blockDim.x + threadIdx.x;
+  if (b < v.nbnd) update_boundary_cell<kOdd>(v, b);
+}
+
+template <bool kOdd>
+__device__ Macro device_macro(const LatticeView& v, std::size_t c) {
+  if (is_wall(static_cast<CellType>(v.type[c] & ~kGeneralBit))) return Macro{};
+  return cell_macro<kOdd>(v, c);
+}
+
+template <bool kOdd>
+__global__ void fields_kernel(LatticeView v, float* rho, float* u) {
+  const std::size_t c = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (c >= v.ncells) return;
+  const Macro m = device_macro<kOdd>(v, c);
+  rho[c] = m.rho;
+  for (int a = 0; a < 3; ++a) u[3 * c + a] = m.u[a];
+}
+
+template <bool kOdd>
+__global__ void divergence_kernel(LatticeView v, float limit2, unsigned long long* first) {
+  const std::size_t c = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (c >= v.ncells) return;
+  const Macro m = device_macro<kOdd>(v, c);
+  const float s2 = m.u[0] * m.u[0] + m.u[1] * m.u[1] + m.u[2] * m.u[2];
+  if (!(s2 <= limit2) || !isfinite(m.rho)) atomicMin(first, static_cast<unsigned long long>(c));
+}
+
+__global__ void init_kernel(LatticeView v, const float* rho, const float* u) {
+  const std::size_t c = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (c >= v.ncells) return;
+  Macro m;
+  if (rho) m.rho = rho[c];
+  if (u)
+    for (int a = 0; a < 3; ++a) m.u[a] = u[3 * c + a];
+  for (int i = 0; i < Q; ++i) pop(v, i, c) = store_pop(equilibrium(i, m.rho, m.u));
+  if (v.aux) store_aux(v, c, m);
+}
+
+__global__ void init_boundary_kernel(LatticeView v) {
+  const int b = blockIdx.x * blockDim.x + threadIdx.x;
+  if (b >= v.nbnd) return;
+  const std::size_t c = v.bnd_cell[b];
+  const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
+  Macro m = load_aux(v, c);
+  if (t == CellType::VelocityInlet)
+    for (int a = 0; a < 3; ++a) m.u[a] = v.bnd_value[4 * b + a];
+  if (t == CellType::PressureOutlet) m.rho = v.bnd_value[4 * b];
+  store_aux(v, c, m);
+}
+
+__global__ void copy_kernel(const float4* __restrict__ a, float4* __restrict__ b, std::size_t n) {
+  for (std::size_t i = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x; i < n; i += static_cast<std::size_t>(gridDim.x) * blockDim.x) b[i] = a[i];
+}
+
+class CudaSolver final : public Solver {
+ public:
+  explicit CudaSolver(Lattice lattice) : Solver(std::move(lattice)) {
+    int count = 0;
+    if (cudaGetDeviceCount(&count) != cudaSuccess || count == 0) {
+      cudaGetLastError();
+      throw ConfigError("backend 'cuda' requested, but no CUDA device is available");
+    }
+    const std::size_t n = lattice_.cells();
+    g_.resize(Q * n);
+    type_.upload(lattice_.types());
+    tag_.upload(lattice_.tags());
+    walls_.upload(lattice_.wall_motions());
+    bnd_cell_.upload(lattice_.boundary_cells());
+    bnd_normal_.upload(lattice_.boundary_normals());
+    bnd_value_.upload(lattice_.boundary_values());
+    support_.upload(lattice_.support_cells());
+    support_b_.upload(lattice_.support_boundary_index());
+    row_offsets_.upload(lattice_.row_offsets());
+    if (!lattice_.boundary_cells().empty()) aux_.resize(4 * n);
+    check(cudaMalloc(&flag_, sizeof(unsigned long long)), "cudaMalloc");
+    sync_view();
+    do_initialize({}, {});
+  }
+  ~CudaSolver() override { cudaFree(flag_); }
+  const char* backend_name() const override { return "cuda"; }
+  void synchronize() override { check(cudaDeviceSynchronize(), "step"); }
+
+  void set_force_field(const std::vector<float>& f) override {
+    const std::size_t n = lattice_.cells();
+    if (f.empty()) {
+      force_.resize(0);
+    } else {
+      if (f.size() != 3 * n) throw ConfigError("set_force_field: expected 3 values per cell");
+      std::vector<float> soa(3 * n);
+      for (std::size_t c = 0; c < n; ++c)
+        for (int a = 0; a < 3; ++a) {
+          if (!std::isfinite(f[3 * c + a])) throw ConfigError("set_force_field: force is not finite");
+          soa[a * n + c] = f[3 * c + a];
+        }
+      force_.upload(soa);
+    }
+    sync_view();
+  }
+
+  void set_boundary_values(const std::vector<float>& values) override {
+    if (values.size() != bnd_value_.size()) throw ConfigError("set_boundary_values: expected 4 values per open-boundary cell");
+    for (float v : values)
+      if (!std::isfinite(v)) throw ConfigError("set_boundary_values: value is not finite");
+    bnd_value_.upload(values);
+  }
+
+  std::vector<float> populations() override {
+    std::vector<pop_t> h;
+    g_.download(h);
+    std::vector<float> out(h.size());
+    for (std::size_t k = 0; k < h.size(); ++k) out[k] = load_pop(h[k]);
+    return out;
+  }
+
+ protected:
+  void sync_view() override {
+    view_.g = g_.data();
+    view_.type = type_.data();
+    view_.tag = tag_.data();
+    view_.walls = walls_.data();
+    view_.force = force_.size() ? force_.data() : nullptr;
+    view_.bnd_cell = bnd_cell_.data();
+    view_.bnd_normal = bnd_normal_.data();
+    view_.bnd_value = bnd_value_.data();
+    view_.aux = aux_.size() ? aux_.data() : nullptr;
+    view_.row_offsets = row_offsets_.data();
+  }
+
+  void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) override {
+    DeviceArray<float> drho, du;
+    drho.upload(rho);
+    du.upload(u);
+    init_kernel<<<blocks(view_.ncells), kBlock>>>(view_, rho.empty() ? nullptr : drho.data(), u.empty() ? nullptr : du.data());
+    if (view_.nbnd) init_boundary_kernel<<<blocks(view_.nbnd), kBlock>>>(view_);
+    check(cudaDeviceSynchronize(), "initialize");
+  }
+
+  template <bool kOdd>
+  void run_step() {
+    const int ns = static_cast<int>(support_.size());
+    if (ns) support_kernel<kOdd><<<blocks(ns), kBlock>>>(view_, support_.data(), support_b_.data(), ns);
+    const int force = force_mode(view_);
+    const unsigned nb = blocks(view_.ncells);
+    if (view_.params.smagorinsky > 0.0f) {
+      if (force == kNoForce) fluid_kernel<kOdd, true, kNoForce><<<nb, kBlock>>>(view_);
+      if (force == kUniformForce) fluid_kernel<kOdd, true, kUniformForce><<<nb, kBlock>>>(view_);
+      if (force == kForceField) fluid_kernel<kOdd, true, kForceField><<<nb, kBlock>>>(view_);
+    } else {
+      if (force == kNoForce) fluid_kernel<kOdd, false, kNoForce><<<nb, kBlock>>>(view_);
+      if (force == kUniformForce) fluid_kernel<kOdd, false, kUniformForce><<<nb, kBlock>>>(view_);
+      if (force == kForceField) fluid_kernel<kOdd, false, kForceField><<<nb, kBlock>>>(view_);
+    }
+    if (view_.nbnd) boundary_kernel<kOdd><<<blocks(view_.nbnd), kBlock>>>(view_);
+  }
+  void do_step(bool odd) override {
+    odd ? run_step<true>() : run_step<false>();
+    check(cudaGetLastError(), "step launch");
+  }
+
+  void do_fields(bool next_odd, Fields& out) override {
+    DeviceArray<float> rho(view_.ncells), u(3 * view_.ncells);
+    if (next_odd)
+      fields_kernel<true><<<blocks(view_.ncells), kBlock>>>(view_, rho.data(), u.data());
+    else
+      fields_kernel<false><<<blocks(view_.ncells), kBlock>>>(view_, rho.data(), u.data());
+    check(cudaGetLastError(), "fields");
+    rho.download(out.rho);
+    u.download(out.u);
+  }
+
+  long long do_find_divergent(bool next_odd, float limit) override {
+    const unsigned long long none = ~0ULL;
+    check(cudaMemcpy(flag_, &none, sizeof(none), cudaMemcpyHostToDevice), "guard");
+    if (next_odd)
+      divergence_kernel<true><<<blocks(view_.ncells), kBlock>>>(view_, limit * limit, flag_);
+    else
+      divergence_kernel<false><<<blocks(view_.ncells), kBlock>>>(view_, limit * limit, flag_);
+    unsigned long long first = none;
+    check(cudaMemcpy(&first, flag_, sizeof(first), cudaMemcpyDeviceToHost), "guard");
+    return first == none ? -1 : static_cast<long long>(first);
+  }
+
+ private:
+  DeviceArray<pop_t> g_;
+  DeviceArray<std::uint8_t> type_, tag_, bnd_normal_;
+  DeviceArray<WallMotion> walls_;
+  DeviceArray<std::uint32_t> bnd_cell_, support_;
+  DeviceArray<std::int32_t> support_b_;
+  DeviceArray<float> bnd_value_, force_, aux_;
+  DeviceArray<std::int64_t> row_offsets_;
+  unsigned long long* flag_ = nullptr;
+};
+
+}  // namespace
+
+bool cuda_available() {
+  int count = 0;
+  if (cudaGetDeviceCount(&count) != cudaSuccess) {
+    cudaGetLastError();
+    return false;
+  }
+  return count > 0;
+}
+
+std::unique_ptr<Solver> make_cuda_solver(Lattice lattice) { return std::make_unique<CudaSolver>(std::move(lattice)); }
+
+double device_copy_bandwidth_gbs(std::size_t bytes) {
+  if (!cuda_available()) throw ConfigError("device bandwidth: no CUDA device");
+  const std::size_t n = std::max<std::size_t>(bytes / sizeof(float4), 1024);
+  DeviceArray<float4> a(n), b(n);
+  check(cudaMemset(a.data(), 0, n * sizeof(float4)), "memset");
+  cudaEvent_t t0, t1;
+  cudaEventCreate(&t0);
+  cudaEventCreate(&t1);
+  float best = 1e30f;
+  for (int rep = 0; rep < 10; ++rep) {
+    cudaEventRecord(t0);
+    copy_kernel<<<1024 * 132, 256>>>(a.data(), b.data(), n);
+    cudaEventRecord(t1);
+    cudaEventSynchronize(t1);
+    float ms = 0;
+    cudaEventElapsedTime(&ms, t0, t1);
+    if (rep > 0) best = std::min(best, ms);
+  }
+  cudaEventDestroy(t0);
+  cudaEventDestroy(t1);
+  return 2.0 * n * sizeof(float4) / (best * 1e-3) * 1e-9;
+}
+
+}  // namespace ship_lrm::lbm

@@ -1,0 +1,284 @@
+#include "ship_lrm/lbm/lattice.hpp"
+
+#include "ship_lrm/lbm/lattice_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+
+namespace ship_lrm::lbm {
+
+const char* to_string(FaceType t) {
+  switch (t) {
+    case FaceType::Wall: return "wall";
+    case FaceType::SlipWall: return "slip";
+    case FaceType::MovingWall: return "moving_wall";
+    case FaceType::Periodic: return "periodic";
+    case FaceType::VelocityInlet: return "velocity_inlet";
+    case FaceType::PressureOutlet: return "pressure_outlet";
+    case FaceType::ImpedanceOutlet: return "impedance_outlet";
+  }
+  return "?";
+}
+
+const char* to_string(CellType t) {
+  switch (t) {
+    case CellType::Fluid: return "fluid";
+    case CellType::Wall: return "wall";
+    case CellType::SlipWall: return "slip_wall";
+    case CellType::MovingWall: return "moving_wall";
+    case CellType::VelocityInlet: return "velocity_inlet";
+    case CellType::PressureOutlet: return "pressure_outlet";
+    case CellType::ImpedanceOutlet: return "impedance_outlet";
+  }
+  return "?";
+}
+
+namespace {
+const char* kFaceName[6] = {"-x", "+x", "-y", "+y", "-z", "+z"};
+
+void check_velocity(const std::array<float, 3>& u, const std::string& where) {
+  const float speed = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  if (!std::isfinite(speed)) throw ConfigError(where + ": velocity is not finite");
+  const float mach = speed / std::sqrt(d3q19::cs2);
+  if (mach > kMaxSetupMach) {
+    std::ostringstream s;
+    s << where << ": lattice velocity " << speed << " is Mach " << mach << " > limit " << kMaxSetupMach
+      << " (reduce the physical-to-lattice velocity ratio: finer time step)";
+    throw ConfigError(s.str());
+  }
+}
+
+CellType open_cell_type(FaceType f) {
+  return f == FaceType::VelocityInlet ? CellType::VelocityInlet : (f == FaceType::PressureOutlet ? CellType::PressureOutlet : CellType::ImpedanceOutlet);
+}
+bool is_open_face(FaceType f) { return f == FaceType::VelocityInlet || f == FaceType::PressureOutlet || f == FaceType::ImpedanceOutlet; }
+int open_priority(FaceType f) { return f == FaceType::VelocityInlet ? 3 : (f == FaceType::PressureOutlet ? 2 : (f == FaceType::ImpedanceOutlet ? 1 : 0)); }
+}  // namespace
+
+// Neighbour offsets for each of the 9 row classes (y and z: first, interior, last row).
+static std::vector<std::int64_t> bulk_row_offsets(const int n[3]) {
+  std::vector<std::int64_t> off(9 * Q);
+  const std::int64_t sy = n[0], sz = static_cast<std::int64_t>(n[0]) * n[1];
+  for (int cy = 0; cy < 3; ++cy)
+    for (int cz = 0; cz < 3; ++cz)
+      for (int i = 0; i < Q; ++i) {
+        const int y = cy == 0 ? 0 : (cy == 1 ? 1 : n[1] - 1), z = cz == 0 ? 0 : (cz == 1 ? 1 : n[2] - 1);
+        const int qy = (y + d3q19::cy(i) + n[1]) % n[1], qz = (z + d3q19::cz(i) + n[2]) % n[2];
+        off[(cy * 3 + cz) * Q + i] = d3q19::cx(i) + (qy - y) * sy + (qz - z) * sz;
+      }
+  return off;
+}
+
+Lattice::Lattice(const LatticeConfig& cfg) : cfg_(cfg) {
+  const int n[3] = {cfg.nx, cfg.ny, cfg.nz};
+  for (int a = 0; a < 3; ++a) {
+    if (n[a] < 3) {
+      std::ostringstream s;
+      s << "lattice size " << cfg.nx << " x " << cfg.ny << " x " << cfg.nz << ": every dimension needs at least 3 cells";
+      throw ConfigError(s.str());
+    }
+  }
+  if (static_cast<double>(cfg.nx) * cfg.ny * cfg.nz >= 4294967295.0) throw ConfigError("lattice has 2^32 cells or more; not supported");
+  const float nu = cfg.collision.nu;
+  if (!(nu > 0.0f) || !std::isfinite(nu)) {
+    std::ostringstream s;
+    s << "lattice viscosity nu = " << nu << " must be positive (relaxation time tau = 3 nu + 1/2 > 1/2)";
+    throw ConfigError(s.str());
+  }
+  if (nu > 10.0f) throw ConfigError("lattice viscosity nu > 10 (tau > 30.5): the set-up is far outside the LBM's range");
+  if (!(cfg.collision.smagorinsky >= 0.0f) || cfg.collision.smagorinsky > 1.0f)
+    throw ConfigError("Smagorinsky constant must lie in [0, 1]");
+  if (!(cfg.mach_guard > 0.0f)) throw ConfigError("mach_guard must be positive");
+  if (cfg.guard_interval < 0) throw ConfigError("guard_interval must be >= 0");
+  for (int a = 0; a < 3; ++a) {
+    const bool lo = cfg.faces[2 * a].type == FaceType::Periodic, hi = cfg.faces[2 * a + 1].type == FaceType::Periodic;
+    if (lo != hi) throw ConfigError(std::string("face ") + kFaceName[2 * a] + " and " + kFaceName[2 * a + 1] + ": periodic must be set on both faces of an axis");
+  }
+  for (int f = 0; f < 6; ++f) {
+    const auto& fc = cfg.faces[f];
+    if (fc.type == FaceType::MovingWall || fc.type == FaceType::VelocityInlet) check_velocity(fc.velocity, std::string("face ") + kFaceName[f]);
+    if (fc.type == FaceType::MovingWall && fc.velocity[f / 2] != 0.0f)
+      throw ConfigError(std::string("face ") + kFaceName[f] + ": a moving wall face must move tangentially (normal velocity component must be 0)");
+    if (fc.type == FaceType::PressureOutlet && !(fc.density > 0.0f && fc.density < 2.0f))
+      throw ConfigError(std::string("face ") + kFaceName[f] + ": outlet density must lie in (0, 2) lattice units");
+    if (is_open_face(fc.type) && n[f / 2] < 5)
+      throw ConfigError(std::string("face ") + kFaceName[f] + ": open boundaries need at least 5 cells across the domain");
+  }
+  for (int a = 0; a < 3; ++a)
+    if (!std::isfinite(cfg.uniform_force[a])) throw ConfigError("uniform force is not finite");
+  type_.assign(cells(), static_cast<std::uint8_t>(CellType::Fluid));
+  tag_.assign(cells(), 0);
+  // Outermost layers of open faces become open-boundary cells; velocity inlets win at edges.
+  for (int z = 0; z < cfg.nz; ++z)
+    for (int y = 0; y < cfg.ny; ++y)
+      for (int x = 0; x < cfg.nx; ++x) {
+        const int p[3] = {x, y, z};
+        FaceType best = FaceType::Wall;
+        for (int f = 0; f < 6; ++f) {
+          const bool on = (f % 2 == 0) ? p[f / 2] == 0 : p[f / 2] == n[f / 2] - 1;
+          if (on && open_priority(cfg.faces[f].type) > open_priority(best)) best = cfg.faces[f].type;
+        }
+        if (is_open_face(best)) type_[index(x, y, z)] = static_cast<std::uint8_t>(open_cell_type(best));
+      }
+}
+
+void Lattice::check_cell(int x, int y, int z, const char* what) const {
+  if (finalized_) throw ConfigError(std::string(what) + ": the lattice is already in use by a solver; set cells before making it");
+  if (x < 0 || y < 0 || z < 0 || x >= cfg_.nx || y >= cfg_.ny || z >= cfg_.nz) {
+    std::ostringstream s;
+    s << what << ": cell (" << x << ", " << y << ", " << z << ") is outside the " << cfg_.nx << " x " << cfg_.ny << " x " << cfg_.nz << " lattice";
+    throw ConfigError(s.str());
+  }
+}
+
+void Lattice::set_wall(int x, int y, int z) {
+  check_cell(x, y, z, "set_wall");
+  type_[index(x, y, z)] = static_cast<std::uint8_t>(CellType::Wall);
+}
+
+void Lattice::set_slip_wall(int x, int y, int z, int axis, int sign) {
+  check_cell(x, y, z, "set_slip_wall");
+  if (axis < 0 || axis > 2 || (sign != 1 && sign != -1)) throw ConfigError("set_slip_wall: axis must be 0..2 and sign +-1");
+  type_[index(x, y, z)] = static_cast<std::uint8_t>(CellType::SlipWall);
+  tag_[index(x, y, z)] = static_cast<std::uint8_t>(2 * axis + (sign > 0 ? 1 : 0));
+}
+
+int Lattice::add_wall_motion(const WallMotion& m) {
+  if (walls_.size() >= 256) throw ConfigError("at most 256 moving walls are supported");
+  check_velocity({m.v[0], m.v[1], m.v[2]}, "wall motion");
+  walls_.push_back(m);
+  return static_cast<int>(walls_.size()) - 1;
+}
+
+void Lattice::set_moving_wall(int x, int y, int z, int wall) {
+  check_cell(x, y, z, "set_moving_wall");
+  if (wall < 0 || wall >= static_cast<int>(walls_.size())) throw ConfigError("set_moving_wall: unknown wall index (call add_wall_motion first)");
+  type_[index(x, y, z)] = static_cast<std::uint8_t>(CellType::MovingWall);
+  tag_[index(x, y, z)] = static_cast<std::uint8_t>(wall);
+}
+
+int Lattice::open_normal(int x, int y, int z) const {
+  const int p[3] = {x, y, z}, n[3] = {cfg_.nx, cfg_.ny, cfg_.nz};
+  const auto t = static_cast<CellType>(type_[index(x, y, z)]);
+  int best = -1, best_score = -1;
+  for (int f = 0; f < 6; ++f) {
+    const bool on = (f % 2 == 0) ? p[f / 2] == 0 : p[f / 2] == n[f / 2] - 1;
+    if (!on || cfg_.faces[f].type == FaceType::Periodic) continue;
+    const int score = (is_open_face(cfg_.faces[f].type) && open_cell_type(cfg_.faces[f].type) == t) ? 2 : 1;
+    if (score > best_score) best = f, best_score = score;
+  }
+  return best;  // face index f = axis*2 + (outward normal > 0)
+}
+
+void Lattice::set_open(int x, int y, int z, CellType t, const std::array<float, 4>& value) {
+  const auto old = type_[index(x, y, z)];
+  type_[index(x, y, z)] = static_cast<std::uint8_t>(t);
+  if (open_normal(x, y, z) < 0) {
+    type_[index(x, y, z)] = old;
+    std::ostringstream s;
+    s << to_string(t) << " at (" << x << ", " << y << ", " << z << "): open boundary cells must lie on a non-periodic face of the domain";
+    throw ConfigError(s.str());
+  }
+  explicit_values_.emplace_back(static_cast<std::uint32_t>(index(x, y, z)), value);
+}
+
+void Lattice::set_velocity_inlet(int x, int y, int z, const std::array<float, 3>& u) {
+  check_cell(x, y, z, "set_velocity_inlet");
+  check_velocity(u, "set_velocity_inlet");
+  set_open(x, y, z, CellType::VelocityInlet, {u[0], u[1], u[2], 0.0f});
+}
+
+void Lattice::set_pressure_outlet(int x, int y, int z, float rho) {
+  check_cell(x, y, z, "set_pressure_outlet");
+  if (!(rho > 0.0f && rho < 2.0f)) throw ConfigError("set_pressure_outlet: density must lie in (0, 2) lattice units");
+  set_open(x, y, z, CellType::PressureOutlet, {rho, 0.0f, 0.0f, 0.0f});
+}
+
+void Lattice::set_impedance_outlet(int x, int y, int z) {
+  check_cell(x, y, z, "set_impedance_outlet");
+  set_open(x, y, z, CellType::ImpedanceOutlet, {1.0f, 0.0f, 0.0f, 0.0f});
+}
+
+void Lattice::finalize() {
+  if (finalized_) return;
+  const int n[3] = {cfg_.nx, cfg_.ny, cfg_.nz};
+  std::unordered_map<std::uint32_t, std::array<float, 4>> values;
+  for (const auto& [c, v] : explicit_values_) values[c] = v;
+  std::vector<std::int32_t> bnd_of(cells(), -1);
+  row_offsets_ = bulk_row_offsets(n);
+  fluid_count_ = 0;
+  for (int z = 0; z < n[2]; ++z)
+    for (int y = 0; y < n[1]; ++y)
+      for (int x = 0; x < n[0]; ++x) {
+        const std::size_t c = index(x, y, z);
+        const auto t = static_cast<CellType>(type_[c]);
+        if (is_wall(t)) continue;
+        ++fluid_count_;
+        if (is_open_boundary(t)) {
+          const int f = open_normal(x, y, z);
+          bnd_of[c] = static_cast<std::int32_t>(bnd_cell_.size());
+          bnd_cell_.push_back(static_cast<std::uint32_t>(c));
+          bnd_normal_.push_back(static_cast<std::uint8_t>(f));
+          std::array<float, 4> v{0, 0, 0, 0};
+          const auto it = values.find(static_cast<std::uint32_t>(c));
+          if (it != values.end()) {
+            v = it->second;
+          } else {
+            const FaceCondition& fc = cfg_.faces[f];
+            if (t == CellType::VelocityInlet) v = {fc.velocity[0], fc.velocity[1], fc.velocity[2], 0.0f};
+            if (t == CellType::PressureOutlet) v = {fc.density, 0, 0, 0};
+            if (t == CellType::ImpedanceOutlet) v = {1.0f, 0, 0, 0};
+          }
+          bnd_value_.insert(bnd_value_.end(), v.begin(), v.end());
+          continue;
+        }
+        // Bulk: every neighbour is a fluid-like cell reached without an x wrap (y and z may wrap).
+        bool general = x == 0 || x == n[0] - 1;
+        for (int i = 1; i < Q && !general; ++i) {
+          int q[3] = {x + d3q19::cx(i), y + d3q19::cy(i), z + d3q19::cz(i)};
+          for (int a = 1; a < 3; ++a)
+            if (q[a] < 0 || q[a] >= n[a]) {
+              if (cfg_.faces[2 * a].type != FaceType::Periodic) general = true;
+              q[a] = (q[a] + n[a]) % n[a];
+            }
+          general = general || is_wall(static_cast<CellType>(type_[index(q[0], q[1], q[2])] & ~kGeneralBit));
+        }
+        const std::uint32_t cls = static_cast<std::uint32_t>(row_class(n, y, z));
+        if (general) {
+          type_[c] |= kGeneralBit;
+          general_.push_back(static_cast<std::uint32_t>(c));
+        } else if (!segments_.empty() && segments_.back().first + segments_.back().count == c && segments_.back().row_class == cls) {
+          ++segments_.back().count;
+        } else {
+          segments_.push_back({static_cast<std::uint32_t>(c), 1, cls});
+        }
+      }
+  // Support set of the open boundaries: every fluid-like cell within two cells along an axis.
+  if (!bnd_cell_.empty()) {
+    std::vector<char> mark(cells(), 0);
+    for (std::uint32_t c : bnd_cell_) {
+      const int p0[3] = {static_cast<int>(c % n[0]), static_cast<int>((c / n[0]) % n[1]), static_cast<int>(c / (static_cast<std::size_t>(n[0]) * n[1]))};
+      for (int a = 0; a < 3; ++a)
+        for (int d = -2; d <= 2; ++d) {
+          int p[3] = {p0[0], p0[1], p0[2]};
+          p[a] += d;
+          if (p[a] < 0 || p[a] >= n[a]) {
+            if (cfg_.faces[2 * a].type != FaceType::Periodic) continue;
+            p[a] = (p[a] + n[a]) % n[a];
+          }
+          const std::size_t q = index(p[0], p[1], p[2]);
+          if (!is_wall(static_cast<CellType>(type_[q] & ~kGeneralBit))) mark[q] = 1;
+        }
+    }
+    for (std::size_t c = 0; c < cells(); ++c)
+      if (mark[c]) {
+        support_.push_back(static_cast<std::uint32_t>(c));
+        support_bnd_.push_back(bnd_of[c]);
+      }
+  }
+  finalized_ = true;
+}
+
+}  // namespace ship_lrm::lbm

@@ -1,0 +1,15 @@
+// Sub-commands of the `ship_lrm` command-line program; each file registers one.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace ship_lrm::tools {
+
+// Each returns the action of its sub-command: it returns -1 when that sub-command was not chosen,
+// else the exit code.
+std::function<int()> add_bench_command(CLI::App& app);
+std::function<int()> add_units_command(CLI::App& app);
+std::function<int()> add_demo_command(CLI::App& app);
+
+}  // namespace ship_lrm::tools

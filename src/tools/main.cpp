@@ -1,0 +1,35 @@
+// ship_lrm: command-line entry point (sub-commands in cmd_*.cpp).
+#include <exception>
+#include <iostream>
+#include <vector>
+
+#include "commands.hpp"
+#include "ship_lrm/lbm/lattice.hpp"
+#include "ship_lrm/lbm/solver.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"ship_lrm - Local Recalculation Model: lattice-Boltzmann rotor / ship air-wake simulation"};
+  app.require_subcommand(1);
+  const std::vector<std::function<int()>> actions = {ship_lrm::tools::add_bench_command(app), ship_lrm::tools::add_units_command(app)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    for (auto& action : actions) {
+      const int rc = action();  // -1: its sub-command was not chosen
+      if (rc >= 0) return rc;
+    }
+  } catch (const ship_lrm::lbm::ConfigError& e) {
+    std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
+    return 2;
+  } catch (const ship_lrm::lbm::DivergenceError& e) {
+    std::cerr << "ship_lrm: " << e.what() << "\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "ship_lrm: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
