@@ -138,11 +138,37 @@ void Lattice::set_wall(int x, int y, int z) {
   type_[index(x, y, z)] = static_cast<std::uint8_t>(CellType::Wall);
 }
 
-void Lattice::set_slip_wall(int x, int y, int z, int axis, int sign) {
+void Lattice::set_slip_wall(int x, int y, int z) {
   check_cell(x, y, z, "set_slip_wall");
-  if (axis < 0 || axis > 2 || (sign != 1 && sign != -1)) throw ConfigError("set_slip_wall: axis must be 0..2 and sign +-1");
   type_[index(x, y, z)] = static_cast<std::uint8_t>(CellType::SlipWall);
-  tag_[index(x, y, z)] = static_cast<std::uint8_t>(2 * axis + (sign > 0 ? 1 : 0));
+}
+
+// Reflection rule of a fluid-like cell (see reflect() in lattice_view.hpp): 1 + 2a + (s > 0) when
+// every link with c_a = s (one axis a, one sign s) crosses a slip wall along a (a slip face or a
+// slip-wall cell); else 0 (bounce-back).
+std::uint8_t Lattice::reflection_mode(int x, int y, int z) const {
+  const int n[3] = {cfg_.nx, cfg_.ny, cfg_.nz};
+  for (int a = 0; a < 3; ++a)
+    for (int s = -1; s <= 1; s += 2) {
+      bool complete = true;
+      for (int i = 1; i < Q && complete; ++i) {
+        if (d3q19::c(i, a) != s) continue;
+        int p[3] = {x + d3q19::cx(i), y + d3q19::cy(i), z + d3q19::cz(i)};
+        if (p[a] < 0 || p[a] >= n[a]) {
+          complete = cfg_.faces[2 * a + (p[a] >= n[a] ? 1 : 0)].type == FaceType::SlipWall;
+          continue;
+        }
+        bool out = false;
+        for (int b = 0; b < 3; ++b)
+          if (p[b] < 0 || p[b] >= n[b]) {
+            if (cfg_.faces[2 * b].type != FaceType::Periodic) out = true;
+            p[b] = (p[b] + n[b]) % n[b];
+          }
+        complete = !out && static_cast<CellType>(type_[index(p[0], p[1], p[2])] & ~kGeneralBit) == CellType::SlipWall;
+      }
+      if (complete) return static_cast<std::uint8_t>(1 + 2 * a + (s > 0 ? 1 : 0));
+    }
+  return 0;
 }
 
 int Lattice::add_wall_motion(const WallMotion& m) {
@@ -216,6 +242,7 @@ void Lattice::finalize() {
         const auto t = static_cast<CellType>(type_[c]);
         if (is_wall(t)) continue;
         ++fluid_count_;
+        tag_[c] = reflection_mode(x, y, z);
         if (is_open_boundary(t)) {
           const int f = open_normal(x, y, z);
           bnd_of[c] = static_cast<std::int32_t>(bnd_cell_.size());

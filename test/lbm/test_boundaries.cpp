@@ -1,1 +1,128 @@
+// Open boundaries: velocity inlet / pressure outlet (Latt et al. 2008 FD reconstruction) and the
+// non-reflecting impedance outlet (thesis 6.1.3, eq. 6.15). Issue 2, tests 4 and 7.
+#include <gtest/gtest.h>
 
+#include <cmath>
+#include <numeric>
+
+#include "flow_cases.hpp"
+
+using namespace ship_lrm::lbm;
+using namespace ship_lrm::lbm::test;
+
+// 4. A plug inflow U between no-slip walls develops into the Poiseuille profile
+// u(y) = 6 Ubar (y + 1/2)(H - 1/2 - y) / H^2 (walls halfway at -1/2 and H - 1/2) ahead of the
+// outlet. Ubar is the local mean velocity: the pressure drop along the channel changes the density
+// by ~1 % (LBM weak compressibility), so mass flux sum(rho u), not u, is conserved along x.
+TEST(OpenBoundaries, ChannelInletOutletReachesPoiseuille) {
+  LatticeConfig cfg = periodic_config(120, 20, 3, 0.05f);
+  const float U = 0.03f;
+  cfg.faces[0].type = FaceType::VelocityInlet;
+  cfg.faces[0].velocity = {U, 0, 0};
+  cfg.faces[1].type = FaceType::PressureOutlet;
+  cfg.faces[1].density = 1.0f;
+  cfg.faces[2].type = cfg.faces[3].type = FaceType::Wall;
+  auto s = make_cpu_solver(Lattice(cfg));
+  s->step(20000);
+  const Fields f = s->fields();
+  const Lattice& lat = s->lattice();
+  const int H = cfg.ny;
+  // Entrance length ~ 0.06 Re H = 14 cells (Re = U H / nu = 12); compare at x = 60..100.
+  const auto p = profile_y(lat, f, 0, 60, 100);
+  const double ubar = std::accumulate(p.begin(), p.end(), 0.0) / H;
+  double err = 0;
+  for (int y = 0; y < H; ++y) err = std::max(err, std::abs(p[y] - 6.0 * ubar * (y + 0.5) * (H - 0.5 - y) / (H * H)));
+  RecordProperty("max_error_over_peak", std::to_string(err / (1.5 * ubar)));
+  EXPECT_LT(err / (1.5 * ubar), 0.02);
+  // mass flux at several stations equals the inflow rho_in U H
+  auto flux = [&](int x) {
+    double q = 0;
+    for (int y = 0; y < H; ++y) q += f.rho[lat.index(x, y, 1)] * f.u[3 * lat.index(x, y, 1)];
+    return q;
+  };
+  const double q_in = flux(0);
+  for (int x : {10, 40, 80, 110}) EXPECT_NEAR(flux(x) / q_in, 1.0, 0.01) << "x = " << x;
+  EXPECT_NEAR(f.rho[lat.index(cfg.nx - 1, H / 2, 1)], 1.0, 1e-4);  // the outlet holds its density
+}
+
+// 7. A plane acoustic pulse leaving through the outlet. The reflected energy is measured as the
+// acoustic energy E = sum(cs^2 rho'^2 / 2 + rho u^2 / 2) left in the domain after the pulses have
+// left, relative to the energy of the same pulses at the same time in a domain without boundaries
+// (which removes the viscous decay). The plain pressure outlet (fixed rho) reflects the pulse
+// almost fully (a pressure-release end, reflection coefficient -1).
+namespace {
+double acoustic_energy(const Fields& f, int x_begin, int x_end, const Lattice& lat) {
+  double e = 0;
+  for (int z = 0; z < lat.nz(); ++z)
+    for (int y = 0; y < lat.ny(); ++y)
+      for (int x = x_begin; x < x_end; ++x) {
+        const std::size_t c = lat.index(x, y, z);
+        const double dr = f.rho[c] - 1.0;
+        e += dr * dr / 6.0 + 0.5 * f.rho[c] * (f.u[3 * c] * f.u[3 * c] + f.u[3 * c + 1] * f.u[3 * c + 1] + f.u[3 * c + 2] * f.u[3 * c + 2]);
+      }
+  return e;
+}
+
+double pulse_energy_after(FaceType outlet, int nx, long steps, int& pulse_centre) {
+  LatticeConfig cfg = periodic_config(nx, 3, 3, 0.002f);
+  cfg.faces[0].type = cfg.faces[1].type = outlet;
+  auto s = make_cpu_solver(Lattice(cfg));
+  std::vector<float> rho(s->lattice().cells());
+  pulse_centre = nx / 2;
+  for (int z = 0; z < 3; ++z)
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < nx; ++x) rho[s->lattice().index(x, y, z)] = 1.0f + 1e-3f * std::exp(-std::pow((x - pulse_centre) / 6.0, 2));
+  s->initialize(rho, {});
+  s->step(steps);
+  return acoustic_energy(s->fields(), 0, nx, s->lattice());
+}
+}  // namespace
+
+TEST(OpenBoundaries, ImpedanceOutletAbsorbsAcousticPulse) {
+  const int nx = 200;
+  // the pulses reach the ends after 100 / cs = 173 steps and have left by ~230; wait until 420
+  const long steps = 420;
+  int centre = 0;
+  const double e_impedance = pulse_energy_after(FaceType::ImpedanceOutlet, nx, steps, centre);
+  const double e_pressure = pulse_energy_after(FaceType::PressureOutlet, nx, steps, centre);
+  // reference: periodic domain long enough that the pulses never reach a boundary
+  const double e_reference = pulse_energy_after(FaceType::Periodic, 4 * nx, steps, centre);
+  const double r_impedance = e_impedance / e_reference, r_pressure = e_pressure / e_reference;
+  RecordProperty("reflected_energy_impedance", std::to_string(r_impedance));
+  RecordProperty("reflected_energy_pressure_outlet", std::to_string(r_pressure));
+  std::printf("reflected energy: impedance outlet %.4f, pressure outlet %.4f\n", r_impedance, r_pressure);
+  EXPECT_LT(r_impedance, 0.05);
+  EXPECT_GT(r_pressure, 0.5);  // the plain outlet reflects: what the impedance outlet is for
+}
+
+// The impedance outlet passes a steady through-flow: a velocity inlet at -x and an impedance
+// outlet at +x of a periodic duct keep the plug flow uniform.
+TEST(OpenBoundaries, ImpedanceOutletPassesSteadyFlow) {
+  LatticeConfig cfg = periodic_config(60, 4, 3, 0.05f);
+  const float U = 0.05f;
+  cfg.faces[0].type = FaceType::VelocityInlet;
+  cfg.faces[0].velocity = {U, 0, 0};
+  cfg.faces[1].type = FaceType::ImpedanceOutlet;
+  auto s = make_cpu_solver(Lattice(cfg));
+  s->step(5000);
+  const Fields f = s->fields();
+  for (int x = 0; x < cfg.nx; x += 7)
+    for (int y = 0; y < cfg.ny; ++y) EXPECT_NEAR(f.u[3 * s->lattice().index(x, y, 1)], U, 0.01 * U) << x << " " << y;
+}
+
+// Inlet velocities can be changed per cell at run time (the LRM feeds the wake this way).
+TEST(OpenBoundaries, InletValuesPerCellAtRunTime) {
+  LatticeConfig cfg = periodic_config(40, 8, 3, 0.05f);
+  cfg.faces[0].type = FaceType::VelocityInlet;
+  cfg.faces[1].type = FaceType::ImpedanceOutlet;
+  cfg.faces[2].type = cfg.faces[3].type = FaceType::SlipWall;
+  auto s = make_cpu_solver(Lattice(cfg));
+  const auto& cells = s->lattice().boundary_cells();
+  std::vector<float> values(4 * cells.size(), 0.0f);
+  for (std::size_t b = 0; b < cells.size(); ++b)
+    if (cells[b] % cfg.nx == 0) values[4 * b] = 0.03f;  // inlet cells only; impedance values ignored
+  s->set_boundary_values(values);
+  s->step(3000);
+  EXPECT_NEAR(s->fields().u[3 * s->lattice().index(20, 4, 1)], 0.03f, 0.0006);
+  EXPECT_THROW(s->set_boundary_values({1.0f}), ConfigError);
+}

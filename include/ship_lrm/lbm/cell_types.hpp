@@ -9,7 +9,7 @@ namespace ship_lrm::lbm {
 enum class CellType : std::uint8_t {
   Fluid = 0,
   Wall = 1,             // no-slip bounce-back wall (halfway, Ladd 1994)
-  SlipWall = 2,         // specular (slip) wall; the cell's tag holds the wall normal (axis code)
+  SlipWall = 2,         // specular (slip) wall where it forms a plane; bounce-back at edges/corners
   MovingWall = 3,       // no-slip wall moving with a rigid-body velocity; tag = index in the wall table
   VelocityInlet = 4,    // open boundary cell: prescribed velocity, FD reconstruction (Latt et al. 2008)
   PressureOutlet = 5,   // open boundary cell: prescribed density, FD reconstruction

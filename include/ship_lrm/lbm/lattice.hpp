@@ -64,8 +64,10 @@ class Lattice {
 
   // Per-cell conditions (before the solver is made).
   void set_wall(int x, int y, int z);
-  // Slip wall cell whose wall normal (pointing into the fluid) is +/- along axis.
-  void set_slip_wall(int x, int y, int z, int axis, int sign);
+  // Slip wall cell. Fluid cells that touch slip walls across one plane only (all and only their
+  // links with one sign along one axis hit slip walls) reflect specularly; elsewhere (edges,
+  // corners, mixed with no-slip walls) bounce-back applies, so mass is conserved everywhere.
+  void set_slip_wall(int x, int y, int z);
   // Moving no-slip wall cell that belongs to rigid body `wall` (see add_wall_motion).
   void set_moving_wall(int x, int y, int z, int wall);
   int add_wall_motion(const WallMotion& m);
@@ -95,6 +97,7 @@ class Lattice {
 
  private:
   void check_cell(int x, int y, int z, const char* what) const;
+  std::uint8_t reflection_mode(int x, int y, int z) const;
   void set_open(int x, int y, int z, CellType t, const std::array<float, 4>& value);
   int open_normal(int x, int y, int z) const;  // outward normal code, or -1 if not on an open-able face
 

@@ -24,7 +24,7 @@ struct LatticeView {
   std::size_t ncells = 0;
   pop_t* g = nullptr;                 // Q * ncells, SoA: g[i * ncells + cell]
   const std::uint8_t* type = nullptr;  // CellType, with kGeneralBit on checked fluid cells
-  const std::uint8_t* tag = nullptr;   // slip-wall axis code (axis*2 + (normal>0)) / wall index
+  const std::uint8_t* tag = nullptr;   // fluid: reflection rule (see reflect); moving wall: index
   const float* force = nullptr;        // optional force density field, SoA 3 * ncells
   float uniform_force[3] = {0, 0, 0};
   std::uint8_t face[6] = {0, 0, 0, 0, 0, 0};  // FaceType per face
@@ -66,43 +66,29 @@ SHIP_LRM_HD int force_mode(const LatticeView& v) {
   return v.force ? kForceField : ((v.uniform_force[0] != 0.0f || v.uniform_force[1] != 0.0f || v.uniform_force[2] != 0.0f) ? kUniformForce : kNoForce);
 }
 
-// What lies at (x,y,z) + d: either a fluid-like cell (returns true, sets nb) or a wall, for which
-// flip (bit a: reverse component a of the reflected direction) and the wall velocity uw are set.
-SHIP_LRM_HD bool neighbour(const LatticeView& v, int x, int y, int z, int dx, int dy, int dz, std::size_t& nb, int& flip, float uw[3]) {
+// What lies at (x,y,z) + d: a fluid-like cell (returns true and its index nb) or a wall or the
+// outside of a non-periodic face (returns false and the wall velocity uw at the link midpoint).
+SHIP_LRM_HD bool neighbour(const LatticeView& v, int x, int y, int z, int dx, int dy, int dz, std::size_t& nb, float uw[3]) {
   int p[3] = {x + dx, y + dy, z + dz};
-  int outside = 0, slip_axes = 0;
-  bool all_slip = true;
+  bool outside = false;
   uw[0] = uw[1] = uw[2] = 0.0f;
   for (int a = 0; a < 3; ++a) {
     if (p[a] >= 0 && p[a] < v.n[a]) continue;
     const int f = 2 * a + (p[a] >= v.n[a] ? 1 : 0);
-    const auto ft = static_cast<FaceType>(v.face[f]);
-    if (ft == FaceType::Periodic) {
+    if (static_cast<FaceType>(v.face[f]) == FaceType::Periodic) {
       p[a] = (p[a] + v.n[a]) % v.n[a];
       continue;
     }
-    ++outside;
-    if (ft == FaceType::SlipWall) {
-      slip_axes |= 1 << a;
-    } else {
-      all_slip = false;
-      if (ft == FaceType::MovingWall)
-        for (int k = 0; k < 3; ++k) uw[k] = v.face_velocity[f][k];
-    }
+    outside = true;
+    if (static_cast<FaceType>(v.face[f]) == FaceType::MovingWall)
+      for (int k = 0; k < 3; ++k) uw[k] = v.face_velocity[f][k];
   }
-  if (outside) {
-    flip = all_slip ? slip_axes : 7;
-    return false;
-  }
+  if (outside) return false;
   nb = static_cast<std::size_t>(p[0]) + static_cast<std::size_t>(v.n[0]) * (static_cast<std::size_t>(p[1]) + static_cast<std::size_t>(v.n[1]) * p[2]);
   const auto t = static_cast<CellType>(v.type[nb] & ~kGeneralBit);
   if (!is_wall(t)) return true;
-  flip = 7;
-  if (t == CellType::SlipWall) {
-    flip = 1 << (v.tag[nb] >> 1);
-  } else if (t == CellType::MovingWall) {
+  if (t == CellType::MovingWall) {
     const WallMotion& m = v.walls[v.tag[nb]];
-    // velocity at the link midpoint (halfway bounce-back)
     const float r[3] = {x + 0.5f * dx - m.centre[0], y + 0.5f * dy - m.centre[1], z + 0.5f * dz - m.centre[2]};
     uw[0] = m.v[0] + m.omega[1] * r[2] - m.omega[2] * r[1];
     uw[1] = m.v[1] + m.omega[2] * r[0] - m.omega[0] * r[2];
@@ -111,15 +97,19 @@ SHIP_LRM_HD bool neighbour(const LatticeView& v, int x, int y, int z, int dx, in
   return false;
 }
 
-// Direction obtained by reversing the components of c_i selected by flip; no-slip if the result
-// would not point back into the fluid (e.g. a slip mirror of a direction parallel to the wall).
-SHIP_LRM_HD int reflect(int i, int flip) {
-  if (flip == 7) return d3q19::opp(i);
-  const int x = (flip & 1) ? -d3q19::cx(i) : d3q19::cx(i);
-  const int y = (flip & 2) ? -d3q19::cy(i) : d3q19::cy(i);
-  const int z = (flip & 4) ? -d3q19::cz(i) : d3q19::cz(i);
-  const int k = d3q19::index_of(x, y, z);
-  return k == i ? d3q19::opp(i) : k;
+// Direction into which a population leaving cell c with direction i towards a wall returns to c.
+// The cell's tag (set by Lattice::finalize) selects the rule: 0 = bounce-back (reverse c_i,
+// no-slip); 1 + 2a + (s > 0) = the cell touches a complete plane of slip wall on side s of axis a:
+// links with c_a = s reflect specularly (reverse component a), its other wall links bounce back.
+// Both rules map the directions that hit walls one-to-one onto the directions that come back from
+// them, so every population slot keeps exactly one writer (AA pattern) and mass is conserved.
+// With arriving = true the inverse map is returned: the outgoing direction that comes back as i.
+SHIP_LRM_HD int reflect(const LatticeView& v, std::size_t c, int i, bool arriving) {
+  const int mode = v.tag[c];
+  if (mode == 0) return d3q19::opp(i);
+  const int a = (mode - 1) >> 1, s = ((mode - 1) & 1) ? 1 : -1;
+  if (d3q19::c(i, a) != (arriving ? -s : s)) return d3q19::opp(i);
+  return d3q19::index_of(a == 0 ? -d3q19::cx(i) : d3q19::cx(i), a == 1 ? -d3q19::cy(i) : d3q19::cy(i), a == 2 ? -d3q19::cz(i) : d3q19::cz(i));
 }
 
 // Moving-wall momentum term for the population arriving with direction d (rho_w = 1).
@@ -138,13 +128,12 @@ SHIP_LRM_HD void gather(const LatticeView& v, int x, int y, int z, std::size_t c
   g[0] = load_pop(pop(v, 0, c));
   for (int i = 1; i < Q; ++i) {
     std::size_t nb;
-    int flip;
     float uw[3];
-    if (neighbour(v, x, y, z, -d3q19::cx(i), -d3q19::cy(i), -d3q19::cz(i), nb, flip, uw)) {
+    if (neighbour(v, x, y, z, -d3q19::cx(i), -d3q19::cy(i), -d3q19::cz(i), nb, uw)) {
       g[i] = load_pop(pop(v, d3q19::opp(i), nb));
     } else {
       // arriving from a wall: the outgoing population k (reflected onto i) stored by the even step
-      const int k = reflect(i, flip);
+      const int k = reflect(v, c, i, true);
       g[i] = load_pop(pop(v, d3q19::opp(k), c)) + wall_term(i, uw);
     }
   }
@@ -161,24 +150,23 @@ SHIP_LRM_HD void scatter(const LatticeView& v, int x, int y, int z, std::size_t 
   pop(v, 0, c) = store_pop(g[0]);
   for (int i = 1; i < Q; ++i) {
     std::size_t nb;
-    int flip;
     float uw[3];
-    if (neighbour(v, x, y, z, d3q19::cx(i), d3q19::cy(i), d3q19::cz(i), nb, flip, uw)) {
+    if (neighbour(v, x, y, z, d3q19::cx(i), d3q19::cy(i), d3q19::cz(i), nb, uw)) {
       pop(v, i, nb) = store_pop(g[i]);
     } else {
-      const int k = reflect(i, flip);  // comes back into this cell with direction k
+      const int k = reflect(v, c, i, false);  // comes back into this cell with direction k
       pop(v, k, c) = store_pop(g[i] + wall_term(k, uw));
     }
   }
 }
 
-// Bulk cells: all 18 neighbours are fluid-like cells, reached by the offsets `off` of the cell's
-// row class (no checks).
+// Bulk cells: all 18 neighbours are fluid-like cells; the neighbour at c_i is c + off[i] (offsets
+// of the cell's row class, no checks; the source at -c_i is c + off[opp(i)]).
 template <bool kOdd, bool kSmagorinsky, int kForce>
 SHIP_LRM_HD void update_bulk_cell(const LatticeView& v, std::size_t c, const std::int64_t* off) {
   float g[Q];
   SHIP_LRM_UNROLL
-  for (int i = 0; i < Q; ++i) g[i] = kOdd ? load_pop(pop(v, d3q19::opp(i), c - off[i])) : load_pop(pop(v, i, c));
+  for (int i = 0; i < Q; ++i) g[i] = kOdd ? load_pop(pop(v, d3q19::opp(i), c + off[d3q19::opp(i)])) : load_pop(pop(v, i, c));
   float F[3];
   force_at<kForce>(v, c, F);
   collide<kSmagorinsky, kForce != kNoForce>(g, F, v.params);
