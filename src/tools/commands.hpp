@@ -10,6 +10,6 @@ namespace ship_lrm::tools {
 // else the exit code.
 std::function<int()> add_bench_command(CLI::App& app);
 std::function<int()> add_units_command(CLI::App& app);
-std::function<int()> add_demo_command(CLI::App& app);
+std::function<int()> add_validate_command(CLI::App& app);
 
 }  // namespace ship_lrm::tools

@@ -10,7 +10,8 @@
 int main(int argc, char** argv) {
   CLI::App app{"ship_lrm - Local Recalculation Model: lattice-Boltzmann rotor / ship air-wake simulation"};
   app.require_subcommand(1);
-  const std::vector<std::function<int()>> actions = {ship_lrm::tools::add_bench_command(app), ship_lrm::tools::add_units_command(app)};
+  const std::vector<std::function<int()>> actions = {ship_lrm::tools::add_bench_command(app), ship_lrm::tools::add_units_command(app),
+                                                     ship_lrm::tools::add_validate_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

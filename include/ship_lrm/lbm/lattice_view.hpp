@@ -274,7 +274,23 @@ SHIP_LRM_HD void update_support_macro(const LatticeView& v, std::size_t c, int b
   float g[Q];
   gather<kOdd>(v, x, y, z, c, g);
   if (b >= 0) {
-    store_aux(v, c, boundary_macro(v, b, g, load_aux(v, c)));
+    Macro m = boundary_macro(v, b, g, load_aux(v, c));
+    const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
+    std::size_t in;
+    const int axis = v.bnd_normal[b] >> 1, sgn = (v.bnd_normal[b] & 1) ? 1 : -1;
+    if (t == CellType::PressureOutlet && support_cell(v, x, y, z, axis, -sgn, in)) {
+      // Neumann-type outflow (thesis 6.1.3): the velocity of the interior neighbour (zero normal
+      // gradient) at the same time level, with the prescribed density. Taking u from the known
+      // populations instead (Zou & He) is unstable next to no-slip walls.
+      int xi, yi, zi;
+      cell_coords(v, in, xi, yi, zi);
+      float gi[Q], F[3];
+      gather<kOdd>(v, xi, yi, zi, in, gi);
+      force_at(v, in, F);
+      const Macro mi = macro_from_populations(gi, F);
+      for (int a = 0; a < 3; ++a) m.u[a] = mi.u[a];
+    }
+    store_aux(v, c, m);
   } else {
     float F[3];
     force_at(v, c, F);
