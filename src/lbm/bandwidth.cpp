@@ -10,7 +10,8 @@
 namespace ship_lrm::lbm {
 
 double host_copy_bandwidth_gbs(std::size_t bytes) {
-  const std::size_t n = std::max<std::size_t>(bytes / sizeof(float), 1024);
+  // at least 256 MiB per array so that the copy streams from memory, not from the caches
+  const std::size_t n = std::max<std::size_t>(bytes, std::size_t(256) << 20) / sizeof(float);
   std::unique_ptr<float[]> a(new float[n]), b(new float[n]);
   const long ln = static_cast<long>(n);
 #pragma omp parallel for schedule(static)

@@ -282,7 +282,8 @@ std::unique_ptr<Solver> make_cuda_solver(Lattice lattice) { return std::make_uni
 
 double device_copy_bandwidth_gbs(std::size_t bytes) {
   if (!cuda_available()) throw ConfigError("device bandwidth: no CUDA device");
-  const std::size_t n = std::max<std::size_t>(bytes / sizeof(float4), 1024);
+  // at least 1 GiB per array: well beyond the L2 cache (50 MiB on an H100)
+  const std::size_t n = std::max<std::size_t>(bytes, std::size_t(1) << 30) / sizeof(float4);
   DeviceArray<float4> a(n), b(n);
   check(cudaMemset(a.data(), 0, n * sizeof(float4)), "memset");
   cudaEvent_t t0, t1;

@@ -3,6 +3,8 @@
 
 #include <cstdint>
 
+#include "ship_lrm/lbm/hd.hpp"
+
 namespace ship_lrm::lbm {
 
 // Per-cell type, one byte per cell.
@@ -20,10 +22,10 @@ enum class CellType : std::uint8_t {
 // edge among their 18 neighbours: they take the general (checked) streaming path.
 constexpr std::uint8_t kGeneralBit = 0x80;
 
-constexpr bool is_wall(CellType t) {
+SHIP_LRM_HD constexpr bool is_wall(CellType t) {
   return t == CellType::Wall || t == CellType::SlipWall || t == CellType::MovingWall;
 }
-constexpr bool is_open_boundary(CellType t) {
+SHIP_LRM_HD constexpr bool is_open_boundary(CellType t) {
   return t == CellType::VelocityInlet || t == CellType::PressureOutlet || t == CellType::ImpedanceOutlet;
 }
 

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# GPU check: builds the ROS-free core with CUDA on a GPU machine (CUDA + CMake, no ROS), runs the
+# tests (CUDA-vs-CPU among them) and the GPU benchmarks, and writes the results to $OUT (or
+# build/gpu/results). On a machine without CLI11 / GoogleTest, first run
+# scripts/prepare_gpu_carry.sh on a Debian machine and carry the .carry folder along.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+cd "$root"
+export PATH=$PATH:/usr/local/cuda/bin
+out="${OUT:-$root/build/gpu/results}"
+mkdir -p "$out"
+extra=()
+[ -d .carry/include/CLI ] && extra+=(-DSHIP_LRM_EXTRA_INCLUDE="$root/.carry/include")
+[ -f .carry/googletest/CMakeLists.txt ] && extra+=(-DSHIP_LRM_GTEST_SOURCE="$root/.carry/googletest")
+{
+  nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.max.sm,clocks.max.mem --format=csv || true
+  nvcc --version | tail -1
+} | tee "$out/device.txt"
+cmake -S . -B build/gpu -DCMAKE_BUILD_TYPE=Release -DSHIP_LRM_WITH_ROS=OFF -DSHIP_LRM_CUDA=ON \
+  -DCMAKE_CUDA_ARCHITECTURES="${CUDA_ARCH:-90}" "${extra[@]}" > "$out/configure.log"
+cmake --build build/gpu -j"$(nproc)" 2>&1 | tail -3
+export OMP_NUM_THREADS="${OMP_NUM_THREADS:-$(nproc)}"
+set +e
+build/gpu/bin/test_lbm --gtest_filter="${TEST_FILTER:-*-BluffBody.*}" 2>&1 | tee "$out/tests.log" | grep -E "OK|FAILED|SKIPPED|PASSED|max \|du\||reflected"
+test_rc=${PIPESTATUS[0]}
+set -e
+bench=build/gpu/bin/ship_lrm
+{
+  $bench bench lbm --backend cuda --size 256 --json
+  $bench bench lbm --backend cuda --size 80 --json
+  $bench bench lbm --backend cuda --size 80 --smagorinsky 0.05 --json
+  $bench bench lbm --backend cuda --size 128 --json
+  $bench bench lbm --backend cpu --size 128 --json
+} | tee "$out/bench.jsonl"
+echo "tests exit code: $test_rc"
+exit "$test_rc"
