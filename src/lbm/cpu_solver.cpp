@@ -37,7 +37,7 @@ class PopulationBuffer {
 
 class CpuSolver final : public Solver {
  public:
-  explicit CpuSolver(Lattice lattice) : Solver(std::move(lattice)), g_(Q * lattice_.cells()) {
+  explicit CpuSolver(Lattice lattice) : Solver(std::move(lattice)), g_(Q * view_.pstride) {
     const std::size_t n = lattice_.cells();
     if (!lattice_.boundary_cells().empty()) aux_.assign(4 * n, 0.0f);
     bnd_value_ = lattice_.boundary_values();
@@ -71,8 +71,10 @@ class CpuSolver final : public Solver {
   }
 
   std::vector<float> populations() override {
-    std::vector<float> out(g_.size());
-    for (std::size_t k = 0; k < g_.size(); ++k) out[k] = load_pop(g_.data()[k]);
+    const std::size_t n = lattice_.cells();
+    std::vector<float> out(Q * n);
+    for (int i = 0; i < Q; ++i)
+      for (std::size_t c = 0; c < n; ++c) out[i * n + c] = load_pop(pop(view_, i, c));
     return out;
   }
 
@@ -131,7 +133,7 @@ class CpuSolver final : public Solver {
       for (long s = 0; s < nseg; ++s) {
         const std::size_t first = segs[s].first, last = first + segs[s].count;
         std::int64_t off[Q];
-        for (int i = 0; i < Q; ++i) off[i] = v.row_offsets[segs[s].row_class * Q + i];
+        for (int i = 0; i < Q; ++i) off[i] = v.row_offsets[segs[s].cell_class * Q + i];
 #pragma omp simd
         for (std::size_t c = first; c < last; ++c) update_bulk_cell<kOdd, kSmagorinsky, kForce>(v, c, off);
       }

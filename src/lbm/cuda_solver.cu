@@ -65,7 +65,7 @@ __global__ void fluid_kernel(LatticeView v) {
   if (t == static_cast<std::uint8_t>(CellType::Fluid)) {
     int x, y, z;
     cell_coords(v, c, x, y, z);
-    update_bulk_cell<kOdd, kSmagorinsky, kForce>(v, c, v.row_offsets + Q * row_class(v.n, y, z));
+    update_bulk_cell<kOdd, kSmagorinsky, kForce>(v, c, v.row_offsets + Q * cell_class(v.n, x, y, z));
   }
   else if (t == (static_cast<std::uint8_t>(CellType::Fluid) | kGeneralBit))
     update_general_cell<kOdd>(v, c);
@@ -128,6 +128,14 @@ __global__ void copy_kernel(const float4* __restrict__ a, float4* __restrict__ b
   for (std::size_t i = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x; i < n; i += static_cast<std::size_t>(gridDim.x) * blockDim.x) b[i] = a[i];
 }
 
+__global__ void inplace_kernel(float4* __restrict__ a, std::size_t n) {
+  for (std::size_t i = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x; i < n; i += static_cast<std::size_t>(gridDim.x) * blockDim.x) {
+    float4 v = a[i];
+    v.x *= 1.0001f, v.y *= 1.0001f, v.z *= 1.0001f, v.w *= 1.0001f;
+    a[i] = v;
+  }
+}
+
 class CudaSolver final : public Solver {
  public:
   explicit CudaSolver(Lattice lattice) : Solver(std::move(lattice)) {
@@ -137,7 +145,7 @@ class CudaSolver final : public Solver {
       throw ConfigError("backend 'cuda' requested, but no CUDA device is available");
     }
     const std::size_t n = lattice_.cells();
-    g_.resize(Q * n);
+    g_.resize(Q * view_.pstride);
     type_.upload(lattice_.types());
     tag_.upload(lattice_.tags());
     walls_.upload(lattice_.wall_motions());
@@ -183,8 +191,10 @@ class CudaSolver final : public Solver {
   std::vector<float> populations() override {
     std::vector<pop_t> h;
     g_.download(h);
-    std::vector<float> out(h.size());
-    for (std::size_t k = 0; k < h.size(); ++k) out[k] = load_pop(h[k]);
+    const std::size_t n = lattice_.cells();
+    std::vector<float> out(Q * n);
+    for (int i = 0; i < Q; ++i)
+      for (std::size_t c = 0; c < n; ++c) out[i * n + c] = load_pop(h[i * view_.pstride + c]);
     return out;
   }
 
@@ -280,9 +290,12 @@ bool cuda_available() {
 
 std::unique_ptr<Solver> make_cuda_solver(Lattice lattice) { return std::make_unique<CudaSolver>(std::move(lattice)); }
 
-double device_copy_bandwidth_gbs(std::size_t bytes) {
+namespace {
+// Best of 10 timed launches over arrays of at least 1 GiB (beyond the H100's 50 MiB L2); GB/s
+// counting 2 * bytes per pass.
+template <typename Launch>
+double device_bandwidth(std::size_t bytes, Launch launch) {
   if (!cuda_available()) throw ConfigError("device bandwidth: no CUDA device");
-  // at least 1 GiB per array: well beyond the L2 cache (50 MiB on an H100)
   const std::size_t n = std::max<std::size_t>(bytes, std::size_t(1) << 30) / sizeof(float4);
   DeviceArray<float4> a(n), b(n);
   check(cudaMemset(a.data(), 0, n * sizeof(float4)), "memset");
@@ -292,16 +305,26 @@ double device_copy_bandwidth_gbs(std::size_t bytes) {
   float best = 1e30f;
   for (int rep = 0; rep < 10; ++rep) {
     cudaEventRecord(t0);
-    copy_kernel<<<1024 * 132, 256>>>(a.data(), b.data(), n);
+    launch(a.data(), b.data(), n);
     cudaEventRecord(t1);
     cudaEventSynchronize(t1);
     float ms = 0;
     cudaEventElapsedTime(&ms, t0, t1);
     if (rep > 0) best = std::min(best, ms);
   }
+  check(cudaGetLastError(), "bandwidth kernel");
   cudaEventDestroy(t0);
   cudaEventDestroy(t1);
   return 2.0 * n * sizeof(float4) / (best * 1e-3) * 1e-9;
+}
+}  // namespace
+
+double device_copy_bandwidth_gbs(std::size_t bytes) {
+  return device_bandwidth(bytes, [](float4* a, float4* b, std::size_t n) { copy_kernel<<<132 * 16, 256>>>(a, b, n); });
+}
+
+double device_inplace_bandwidth_gbs(std::size_t bytes) {
+  return device_bandwidth(bytes, [](float4* a, float4*, std::size_t n) { inplace_kernel<<<132 * 16, 256>>>(a, n); });
 }
 
 }  // namespace ship_lrm::lbm

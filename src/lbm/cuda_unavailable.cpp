@@ -11,5 +11,6 @@ std::unique_ptr<Solver> make_cuda_solver(Lattice) {
 }
 
 double device_copy_bandwidth_gbs(std::size_t) { throw ConfigError("device bandwidth: built without CUDA"); }
+double device_inplace_bandwidth_gbs(std::size_t) { throw ConfigError("device bandwidth: built without CUDA"); }
 
 }  // namespace ship_lrm::lbm

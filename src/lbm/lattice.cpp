@@ -57,17 +57,20 @@ bool is_open_face(FaceType f) { return f == FaceType::VelocityInlet || f == Face
 int open_priority(FaceType f) { return f == FaceType::VelocityInlet ? 3 : (f == FaceType::PressureOutlet ? 2 : (f == FaceType::ImpedanceOutlet ? 1 : 0)); }
 }  // namespace
 
-// Neighbour offsets for each of the 9 row classes (y and z: first, interior, last row).
-static std::vector<std::int64_t> bulk_row_offsets(const int n[3]) {
-  std::vector<std::int64_t> off(9 * Q);
-  const std::int64_t sy = n[0], sz = static_cast<std::int64_t>(n[0]) * n[1];
-  for (int cy = 0; cy < 3; ++cy)
-    for (int cz = 0; cz < 3; ++cz)
-      for (int i = 0; i < Q; ++i) {
-        const int y = cy == 0 ? 0 : (cy == 1 ? 1 : n[1] - 1), z = cz == 0 ? 0 : (cz == 1 ? 1 : n[2] - 1);
-        const int qy = (y + d3q19::cy(i) + n[1]) % n[1], qz = (z + d3q19::cz(i) + n[2]) % n[2];
-        off[(cy * 3 + cz) * Q + i] = d3q19::cx(i) + (qy - y) * sy + (qz - z) * sz;
+// Neighbour offsets for each of the 27 cell classes (x, y, z each: first, interior, last).
+static std::vector<std::int64_t> bulk_class_offsets(const int n[3]) {
+  std::vector<std::int64_t> off(27 * Q);
+  const std::int64_t stride[3] = {1, n[0], static_cast<std::int64_t>(n[0]) * n[1]};
+  for (int cls = 0; cls < 27; ++cls)
+    for (int i = 0; i < Q; ++i) {
+      const int k[3] = {cls / 9, (cls / 3) % 3, cls % 3};
+      std::int64_t o = 0;
+      for (int a = 0; a < 3; ++a) {
+        const int p = k[a] == 0 ? 0 : (k[a] == 1 ? 1 : n[a] - 1);
+        o += ((p + d3q19::c(i, a) + n[a]) % n[a] - p) * stride[a];
       }
+      off[cls * Q + i] = o;
+    }
   return off;
 }
 
@@ -233,7 +236,7 @@ void Lattice::finalize() {
   std::unordered_map<std::uint32_t, std::array<float, 4>> values;
   for (const auto& [c, v] : explicit_values_) values[c] = v;
   std::vector<std::int32_t> bnd_of(cells(), -1);
-  row_offsets_ = bulk_row_offsets(n);
+  row_offsets_ = bulk_class_offsets(n);
   fluid_count_ = 0;
   for (int z = 0; z < n[2]; ++z)
     for (int y = 0; y < n[1]; ++y)
@@ -261,22 +264,22 @@ void Lattice::finalize() {
           bnd_value_.insert(bnd_value_.end(), v.begin(), v.end());
           continue;
         }
-        // Bulk: every neighbour is a fluid-like cell reached without an x wrap (y and z may wrap).
-        bool general = x == 0 || x == n[0] - 1;
+        // Bulk: every neighbour is a fluid-like cell inside the domain or across a periodic face.
+        bool general = false;
         for (int i = 1; i < Q && !general; ++i) {
           int q[3] = {x + d3q19::cx(i), y + d3q19::cy(i), z + d3q19::cz(i)};
-          for (int a = 1; a < 3; ++a)
+          for (int a = 0; a < 3; ++a)
             if (q[a] < 0 || q[a] >= n[a]) {
               if (cfg_.faces[2 * a].type != FaceType::Periodic) general = true;
               q[a] = (q[a] + n[a]) % n[a];
             }
           general = general || is_wall(static_cast<CellType>(type_[index(q[0], q[1], q[2])] & ~kGeneralBit));
         }
-        const std::uint32_t cls = static_cast<std::uint32_t>(row_class(n, y, z));
+        const std::uint32_t cls = static_cast<std::uint32_t>(cell_class(n, x, y, z));
         if (general) {
           type_[c] |= kGeneralBit;
           general_.push_back(static_cast<std::uint32_t>(c));
-        } else if (!segments_.empty() && segments_.back().first + segments_.back().count == c && segments_.back().row_class == cls) {
+        } else if (!segments_.empty() && segments_.back().first + segments_.back().count == c && segments_.back().cell_class == cls) {
           ++segments_.back().count;
         } else {
           segments_.push_back({static_cast<std::uint32_t>(c), 1, cls});

@@ -12,7 +12,9 @@ std::string LbmBenchmarkResult::to_json() const {
   std::ostringstream s;
   s << "{\"backend\": \"" << backend << "\", \"size\": " << size << ", \"steps\": " << steps << ", \"seconds\": " << seconds
     << ", \"mlups\": " << mlups << ", \"us_per_step\": " << us_per_step << ", \"bytes_per_cell_update\": " << bytes_per_cell_update
-    << ", \"bandwidth_gbs\": " << bandwidth_gbs << ", \"roofline_fraction\": " << roofline_fraction << ", \"threads\": " << threads << "}";
+    << ", \"bandwidth_gbs\": " << bandwidth_gbs << ", \"roofline_fraction\": " << roofline_fraction
+    << ", \"inplace_bandwidth_gbs\": " << inplace_bandwidth_gbs << ", \"roofline_fraction_inplace\": " << roofline_fraction_inplace
+    << ", \"threads\": " << threads << "}";
   return s.str();
 }
 
@@ -63,8 +65,11 @@ LbmBenchmarkResult run_lbm_benchmark(Backend backend, int size, long steps, floa
   r.us_per_step = r.seconds / steps * 1e6;
   r.bytes_per_cell_update = 2.0 * Q * sizeof(pop_t) + 1.0;
   const std::size_t bytes = n * Q * sizeof(pop_t);
-  r.bandwidth_gbs = r.backend == "cuda" ? device_copy_bandwidth_gbs(bytes) : host_copy_bandwidth_gbs(bytes);
+  const bool gpu = r.backend == "cuda";
+  r.bandwidth_gbs = gpu ? device_copy_bandwidth_gbs(bytes) : host_copy_bandwidth_gbs(bytes);
+  r.inplace_bandwidth_gbs = gpu ? device_inplace_bandwidth_gbs(bytes) : host_inplace_bandwidth_gbs(bytes);
   r.roofline_fraction = r.mlups * 1e6 * r.bytes_per_cell_update / (r.bandwidth_gbs * 1e9);
+  r.roofline_fraction_inplace = r.mlups * 1e6 * r.bytes_per_cell_update / (r.inplace_bandwidth_gbs * 1e9);
   r.threads = r.backend == "cuda" ? 0 : omp_get_max_threads();
   return r;
 }

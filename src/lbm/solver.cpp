@@ -32,6 +32,7 @@ Solver::Solver(Lattice lattice) : lattice_(std::move(lattice)) {
   view_.n[1] = cfg.ny;
   view_.n[2] = cfg.nz;
   view_.ncells = lattice_.cells();
+  view_.pstride = population_stride(view_.ncells);
   for (int a = 0; a < 3; ++a) view_.uniform_force[a] = cfg.uniform_force[a];
   for (int f = 0; f < 6; ++f) {
     view_.face[f] = static_cast<std::uint8_t>(cfg.faces[f].type);

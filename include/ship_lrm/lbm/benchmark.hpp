@@ -12,8 +12,12 @@ namespace ship_lrm::lbm {
 // STREAM "copy" bandwidth in GB/s (bytes read + written), best of several repetitions, on the
 // host with all OpenMP threads (bytes: array size in bytes).
 double host_copy_bandwidth_gbs(std::size_t bytes);
+// In-place read-modify-write a[i] = s a[i] (the AA pattern's access: no write-allocate traffic),
+// counted like copy (8 bytes per element).
+double host_inplace_bandwidth_gbs(std::size_t bytes);
 // Same on the CUDA device (ConfigError without CUDA).
 double device_copy_bandwidth_gbs(std::size_t bytes);
+double device_inplace_bandwidth_gbs(std::size_t bytes);
 
 struct LbmBenchmarkResult {
   std::string backend;
@@ -25,6 +29,8 @@ struct LbmBenchmarkResult {
   double bytes_per_cell_update = 0;  // populations read + written + cell type
   double bandwidth_gbs = 0;          // STREAM-like copy in the same run
   double roofline_fraction = 0;      // mlups / (bandwidth / bytes_per_cell_update)
+  double inplace_bandwidth_gbs = 0;  // in-place read-modify-write in the same run
+  double roofline_fraction_inplace = 0;
   int threads = 1;
   std::string to_json() const;
 };

@@ -41,12 +41,12 @@ struct LatticeConfig {
 // u_ref = 0.3 c_s (tables 6.2-6.4); compressibility errors grow with Ma^2.
 constexpr float kMaxSetupMach = 0.4f;
 
-// A contiguous run of bulk cells along x; row_class selects the neighbour offsets of its row
-// (rows on a periodic y or z face wrap around).
+// A contiguous run of bulk cells along x of one cell class (see cell_class in lattice_view.hpp),
+// which selects their neighbour offsets (cells on a periodic face wrap around).
 struct Segment {
   std::uint32_t first;
   std::uint32_t count;
-  std::uint32_t row_class;
+  std::uint32_t cell_class;
 };
 
 class Lattice {
@@ -86,7 +86,7 @@ class Lattice {
   const std::vector<WallMotion>& wall_motions() const { return walls_; }
   const std::vector<Segment>& bulk_segments() const { return segments_; }
   const std::vector<std::uint32_t>& general_cells() const { return general_; }
-  // Neighbour offsets of bulk cells, Q per row class (see row_class in lattice_view.hpp).
+  // Neighbour offsets of bulk cells, Q per cell class (see cell_class in lattice_view.hpp).
   const std::vector<std::int64_t>& row_offsets() const { return row_offsets_; }
   const std::vector<std::uint32_t>& boundary_cells() const { return bnd_cell_; }
   const std::vector<std::uint8_t>& boundary_normals() const { return bnd_normal_; }

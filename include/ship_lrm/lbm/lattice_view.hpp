@@ -22,7 +22,8 @@ namespace ship_lrm::lbm {
 struct LatticeView {
   int n[3] = {0, 0, 0};
   std::size_t ncells = 0;
-  pop_t* g = nullptr;                 // Q * ncells, SoA: g[i * ncells + cell]
+  std::size_t pstride = 0;            // distance between the arrays of two directions (>= ncells)
+  pop_t* g = nullptr;                 // Q * pstride, SoA: g[i * pstride + cell]
   const std::uint8_t* type = nullptr;  // CellType, with kGeneralBit on checked fluid cells
   const std::uint8_t* tag = nullptr;   // fluid: reflection rule (see reflect); moving wall: index
   const float* force = nullptr;        // optional force density field, SoA 3 * ncells
@@ -37,19 +38,27 @@ struct LatticeView {
   const std::uint8_t* bnd_normal = nullptr;  // outward normal code axis*2 + (sign > 0)
   const float* bnd_value = nullptr;          // 4 * nbnd: inlet velocity (3) | outlet density ([0])
   float* aux = nullptr;  // macroscopic state of open-boundary support cells, SoA 4 * ncells
-  const std::int64_t* row_offsets = nullptr;  // 9 * Q neighbour offsets of bulk cells per row class
+  const std::int64_t* row_offsets = nullptr;  // 27 * Q neighbour offsets of bulk cells per cell class
 };
 
-// Row class of a bulk cell: y and z each first (0), interior (1) or last (2) row; rows on a
-// periodic face reach their neighbours by a wrapped offset, the same for the whole row.
-SHIP_LRM_HD int row_class(const int n[3], int y, int z) {
-  return 3 * (y == 0 ? 0 : (y == n[1] - 1 ? 2 : 1)) + (z == 0 ? 0 : (z == n[2] - 1 ? 2 : 1));
+// Class of a bulk cell: x, y and z each first (0), interior (1) or last (2); cells on a periodic
+// face reach their neighbours by wrapped offsets that are the same for the whole class.
+SHIP_LRM_HD int cell_class(const int n[3], int x, int y, int z) {
+  return 9 * (x == 0 ? 0 : (x == n[0] - 1 ? 2 : 1)) + 3 * (y == 0 ? 0 : (y == n[1] - 1 ? 2 : 1)) + (z == 0 ? 0 : (z == n[2] - 1 ? 2 : 1));
 }
 
 SHIP_LRM_HD std::size_t cell_index(const LatticeView& v, int x, int y, int z) {
   return static_cast<std::size_t>(x) + static_cast<std::size_t>(v.n[0]) * (static_cast<std::size_t>(y) + static_cast<std::size_t>(v.n[1]) * z);
 }
-SHIP_LRM_HD pop_t& pop(const LatticeView& v, int i, std::size_t cell) { return v.g[static_cast<std::size_t>(i) * v.ncells + cell]; }
+SHIP_LRM_HD pop_t& pop(const LatticeView& v, int i, std::size_t cell) { return v.g[static_cast<std::size_t>(i) * v.pstride + cell]; }
+
+// Stride between the population arrays of two directions: the cell count rounded up to 4 KiB and
+// shifted by 5 cache lines per direction, so that the 38 streams of a step fall into different
+// cache sets (with a power-of-two lattice they would all alias one set and thrash the L1).
+inline std::size_t population_stride(std::size_t ncells) {
+  const std::size_t page = 4096 / sizeof(pop_t), shift = 5 * 64 / sizeof(pop_t);
+  return (ncells + page - 1) / page * page + shift;
+}
 
 // Force on a cell: none, the uniform force only, or uniform plus the per-cell field.
 enum ForceMode : int { kNoForce = 0, kUniformForce = 1, kForceField = 2 };
@@ -161,7 +170,7 @@ SHIP_LRM_HD void scatter(const LatticeView& v, int x, int y, int z, std::size_t 
 }
 
 // Bulk cells: all 18 neighbours are fluid-like cells; the neighbour at c_i is c + off[i] (offsets
-// of the cell's row class, no checks; the source at -c_i is c + off[opp(i)]).
+// of the cell's class, no checks; the source at -c_i is c + off[opp(i)]).
 template <bool kOdd, bool kSmagorinsky, int kForce>
 SHIP_LRM_HD void update_bulk_cell(const LatticeView& v, std::size_t c, const std::int64_t* off) {
   float g[Q];
