@@ -128,7 +128,7 @@ class CpuSolver final : public Solver {
     {
 #pragma omp for schedule(static)
       for (long k = 0; k < ns; ++k) update_support_macro<kOdd>(v, support[k], support_b[k]);
-      // implicit barrier: every support state is known before any population is overwritten
+        // implicit barrier: every support state is known before any population is overwritten
 #pragma omp for schedule(static) nowait
       for (long s = 0; s < nseg; ++s) {
         const std::size_t first = segs[s].first, last = first + segs[s].count;
@@ -148,9 +148,11 @@ class CpuSolver final : public Solver {
   void run_step_dispatch() {
     const int force = force_mode(view_);
     if (view_.params.smagorinsky > 0.0f)
-      force == kNoForce ? run_step<kOdd, true, kNoForce>() : (force == kUniformForce ? run_step<kOdd, true, kUniformForce>() : run_step<kOdd, true, kForceField>());
+      force == kNoForce ? run_step<kOdd, true, kNoForce>()
+                        : (force == kUniformForce ? run_step<kOdd, true, kUniformForce>() : run_step<kOdd, true, kForceField>());
     else
-      force == kNoForce ? run_step<kOdd, false, kNoForce>() : (force == kUniformForce ? run_step<kOdd, false, kUniformForce>() : run_step<kOdd, false, kForceField>());
+      force == kNoForce ? run_step<kOdd, false, kNoForce>()
+                        : (force == kUniformForce ? run_step<kOdd, false, kUniformForce>() : run_step<kOdd, false, kForceField>());
   }
   void do_step(bool odd) override { odd ? run_step_dispatch<true>() : run_step_dispatch<false>(); }
 

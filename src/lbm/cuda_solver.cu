@@ -66,8 +66,7 @@ __global__ void fluid_kernel(LatticeView v) {
     int x, y, z;
     cell_coords(v, c, x, y, z);
     update_bulk_cell<kOdd, kSmagorinsky, kForce>(v, c, v.row_offsets + Q * cell_class(v.n, x, y, z));
-  }
-  else if (t == (static_cast<std::uint8_t>(CellType::Fluid) | kGeneralBit))
+  } else if (t == (static_cast<std::uint8_t>(CellType::Fluid) | kGeneralBit))
     update_general_cell<kOdd>(v, c);
 }
 
@@ -125,11 +124,14 @@ __global__ void init_boundary_kernel(LatticeView v) {
 }
 
 __global__ void copy_kernel(const float4* __restrict__ a, float4* __restrict__ b, std::size_t n) {
-  for (std::size_t i = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x; i < n; i += static_cast<std::size_t>(gridDim.x) * blockDim.x) b[i] = a[i];
+  for (std::size_t i = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x; i < n;
+       i += static_cast<std::size_t>(gridDim.x) * blockDim.x)
+    b[i] = a[i];
 }
 
 __global__ void inplace_kernel(float4* __restrict__ a, std::size_t n) {
-  for (std::size_t i = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x; i < n; i += static_cast<std::size_t>(gridDim.x) * blockDim.x) {
+  for (std::size_t i = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x; i < n;
+       i += static_cast<std::size_t>(gridDim.x) * blockDim.x) {
     float4 v = a[i];
     v.x *= 1.0001f, v.y *= 1.0001f, v.z *= 1.0001f, v.w *= 1.0001f;
     a[i] = v;

@@ -7,7 +7,8 @@ namespace ship_lrm::lbm {
 bool cuda_available() { return false; }
 
 std::unique_ptr<Solver> make_cuda_solver(Lattice) {
-  throw ConfigError("backend 'cuda' requested, but ship_lrm was built without CUDA (configure with nvcc on the PATH or -DSHIP_LRM_CUDA=ON)");
+  throw ConfigError(
+      "backend 'cuda' requested, but ship_lrm was built without CUDA (configure with nvcc on the PATH or -DSHIP_LRM_CUDA=ON)");
 }
 
 double device_copy_bandwidth_gbs(std::size_t) { throw ConfigError("device bandwidth: built without CUDA"); }

@@ -8,13 +8,13 @@
 
 namespace ship_lrm::lbm {
 
-CylinderBenchmarkResult run_cylinder_benchmark(int D, Backend backend, long max_steps, double tolerance, const std::function<void(long, double)>& progress,
-                                               const std::string& vti_path) {
+CylinderBenchmarkResult run_cylinder_benchmark(int D, Backend backend, long max_steps, double tolerance,
+                                               const std::function<void(long, double)>& progress, const std::string& vti_path) {
   if (D < 4 || D > 80) throw ConfigError("cylinder benchmark: cells per diameter must lie in [4, 80]");
-  const double dx = 0.1 / D;                 // [m]
+  const double dx = 0.1 / D;                               // [m]
   const int H = static_cast<int>(std::lround(0.41 / dx));  // cells across the channel (walls halfway outside)
   const int nx = static_cast<int>(std::lround(2.5 / dx)) + 1;
-  const float um = 0.1f;                     // lattice centre-line velocity (Mach 0.17)
+  const float um = 0.1f;  // lattice centre-line velocity (Mach 0.17)
   const double ubar = 4.0 * um / 9.0;
   LatticeConfig cfg;
   cfg.nx = nx;

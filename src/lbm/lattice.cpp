@@ -1,36 +1,50 @@
 #include "ship_lrm/lbm/lattice.hpp"
 
-#include "ship_lrm/lbm/lattice_view.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <unordered_map>
 
+#include "ship_lrm/lbm/lattice_view.hpp"
+
 namespace ship_lrm::lbm {
 
 const char* to_string(FaceType t) {
   switch (t) {
-    case FaceType::Wall: return "wall";
-    case FaceType::SlipWall: return "slip";
-    case FaceType::MovingWall: return "moving_wall";
-    case FaceType::Periodic: return "periodic";
-    case FaceType::VelocityInlet: return "velocity_inlet";
-    case FaceType::PressureOutlet: return "pressure_outlet";
-    case FaceType::ImpedanceOutlet: return "impedance_outlet";
+    case FaceType::Wall:
+      return "wall";
+    case FaceType::SlipWall:
+      return "slip";
+    case FaceType::MovingWall:
+      return "moving_wall";
+    case FaceType::Periodic:
+      return "periodic";
+    case FaceType::VelocityInlet:
+      return "velocity_inlet";
+    case FaceType::PressureOutlet:
+      return "pressure_outlet";
+    case FaceType::ImpedanceOutlet:
+      return "impedance_outlet";
   }
   return "?";
 }
 
 const char* to_string(CellType t) {
   switch (t) {
-    case CellType::Fluid: return "fluid";
-    case CellType::Wall: return "wall";
-    case CellType::SlipWall: return "slip_wall";
-    case CellType::MovingWall: return "moving_wall";
-    case CellType::VelocityInlet: return "velocity_inlet";
-    case CellType::PressureOutlet: return "pressure_outlet";
-    case CellType::ImpedanceOutlet: return "impedance_outlet";
+    case CellType::Fluid:
+      return "fluid";
+    case CellType::Wall:
+      return "wall";
+    case CellType::SlipWall:
+      return "slip_wall";
+    case CellType::MovingWall:
+      return "moving_wall";
+    case CellType::VelocityInlet:
+      return "velocity_inlet";
+    case CellType::PressureOutlet:
+      return "pressure_outlet";
+    case CellType::ImpedanceOutlet:
+      return "impedance_outlet";
   }
   return "?";
 }
@@ -51,10 +65,13 @@ void check_velocity(const std::array<float, 3>& u, const std::string& where) {
 }
 
 CellType open_cell_type(FaceType f) {
-  return f == FaceType::VelocityInlet ? CellType::VelocityInlet : (f == FaceType::PressureOutlet ? CellType::PressureOutlet : CellType::ImpedanceOutlet);
+  return f == FaceType::VelocityInlet ? CellType::VelocityInlet
+                                      : (f == FaceType::PressureOutlet ? CellType::PressureOutlet : CellType::ImpedanceOutlet);
 }
 bool is_open_face(FaceType f) { return f == FaceType::VelocityInlet || f == FaceType::PressureOutlet || f == FaceType::ImpedanceOutlet; }
-int open_priority(FaceType f) { return f == FaceType::VelocityInlet ? 3 : (f == FaceType::PressureOutlet ? 2 : (f == FaceType::ImpedanceOutlet ? 1 : 0)); }
+int open_priority(FaceType f) {
+  return f == FaceType::VelocityInlet ? 3 : (f == FaceType::PressureOutlet ? 2 : (f == FaceType::ImpedanceOutlet ? 1 : 0));
+}
 }  // namespace
 
 // Neighbour offsets for each of the 27 cell classes (x, y, z each: first, interior, last).
@@ -97,13 +114,17 @@ Lattice::Lattice(const LatticeConfig& cfg) : cfg_(cfg) {
   if (cfg.guard_interval < 0) throw ConfigError("guard_interval must be >= 0");
   for (int a = 0; a < 3; ++a) {
     const bool lo = cfg.faces[2 * a].type == FaceType::Periodic, hi = cfg.faces[2 * a + 1].type == FaceType::Periodic;
-    if (lo != hi) throw ConfigError(std::string("face ") + kFaceName[2 * a] + " and " + kFaceName[2 * a + 1] + ": periodic must be set on both faces of an axis");
+    if (lo != hi)
+      throw ConfigError(std::string("face ") + kFaceName[2 * a] + " and " + kFaceName[2 * a + 1] +
+                        ": periodic must be set on both faces of an axis");
   }
   for (int f = 0; f < 6; ++f) {
     const auto& fc = cfg.faces[f];
-    if (fc.type == FaceType::MovingWall || fc.type == FaceType::VelocityInlet) check_velocity(fc.velocity, std::string("face ") + kFaceName[f]);
+    if (fc.type == FaceType::MovingWall || fc.type == FaceType::VelocityInlet)
+      check_velocity(fc.velocity, std::string("face ") + kFaceName[f]);
     if (fc.type == FaceType::MovingWall && fc.velocity[f / 2] != 0.0f)
-      throw ConfigError(std::string("face ") + kFaceName[f] + ": a moving wall face must move tangentially (normal velocity component must be 0)");
+      throw ConfigError(std::string("face ") + kFaceName[f] +
+                        ": a moving wall face must move tangentially (normal velocity component must be 0)");
     if (fc.type == FaceType::PressureOutlet && !(fc.density > 0.0f && fc.density < 2.0f))
       throw ConfigError(std::string("face ") + kFaceName[f] + ": outlet density must lie in (0, 2) lattice units");
     if (is_open_face(fc.type) && n[f / 2] < 5)
@@ -131,7 +152,8 @@ void Lattice::check_cell(int x, int y, int z, const char* what) const {
   if (finalized_) throw ConfigError(std::string(what) + ": the lattice is already in use by a solver; set cells before making it");
   if (x < 0 || y < 0 || z < 0 || x >= cfg_.nx || y >= cfg_.ny || z >= cfg_.nz) {
     std::ostringstream s;
-    s << what << ": cell (" << x << ", " << y << ", " << z << ") is outside the " << cfg_.nx << " x " << cfg_.ny << " x " << cfg_.nz << " lattice";
+    s << what << ": cell (" << x << ", " << y << ", " << z << ") is outside the " << cfg_.nx << " x " << cfg_.ny << " x " << cfg_.nz
+      << " lattice";
     throw ConfigError(s.str());
   }
 }
@@ -183,7 +205,8 @@ int Lattice::add_wall_motion(const WallMotion& m) {
 
 void Lattice::set_moving_wall(int x, int y, int z, int wall) {
   check_cell(x, y, z, "set_moving_wall");
-  if (wall < 0 || wall >= static_cast<int>(walls_.size())) throw ConfigError("set_moving_wall: unknown wall index (call add_wall_motion first)");
+  if (wall < 0 || wall >= static_cast<int>(walls_.size()))
+    throw ConfigError("set_moving_wall: unknown wall index (call add_wall_motion first)");
   type_[index(x, y, z)] = static_cast<std::uint8_t>(CellType::MovingWall);
   tag_[index(x, y, z)] = static_cast<std::uint8_t>(wall);
 }
@@ -289,7 +312,8 @@ void Lattice::finalize() {
   if (!bnd_cell_.empty()) {
     std::vector<char> mark(cells(), 0);
     for (std::uint32_t c : bnd_cell_) {
-      const int p0[3] = {static_cast<int>(c % n[0]), static_cast<int>((c / n[0]) % n[1]), static_cast<int>(c / (static_cast<std::size_t>(n[0]) * n[1]))};
+      const int p0[3] = {static_cast<int>(c % n[0]), static_cast<int>((c / n[0]) % n[1]),
+                         static_cast<int>(c / (static_cast<std::size_t>(n[0]) * n[1]))};
       for (int a = 0; a < 3; ++a)
         for (int d = -2; d <= 2; ++d) {
           int p[3] = {p0[0], p0[1], p0[2]};

@@ -89,8 +89,8 @@ void Solver::check_divergence() {
   const Fields f = fields();
   const int nx = lattice_.nx(), ny = lattice_.ny();
   const float* u = &f.u[3 * c];
-  throw DivergenceError(steps_, static_cast<int>(c % nx), static_cast<int>((c / nx) % ny), static_cast<int>(c / (static_cast<long long>(nx) * ny)),
-                        std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]), limit);
+  throw DivergenceError(steps_, static_cast<int>(c % nx), static_cast<int>((c / nx) % ny),
+                        static_cast<int>(c / (static_cast<long long>(nx) * ny)), std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]), limit);
 }
 
 std::unique_ptr<Solver> make_solver(Lattice lattice, Backend backend) {

@@ -15,12 +15,13 @@ void write_vti(const std::string& path, const Lattice& lattice, const Fields& fi
   const std::uint64_t rho_bytes = n * sizeof(float), u_bytes = 3 * n * sizeof(float), flag_bytes = n;
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-      << "  <ImageData WholeExtent=\"0 " << lattice.nx() - 1 << " 0 " << lattice.ny() - 1 << " 0 " << lattice.nz() - 1 << "\" Origin=\"" << o[0]
-      << " " << o[1] << " " << o[2] << "\" Spacing=\"" << dx << " " << dx << " " << dx << "\">\n"
+      << "  <ImageData WholeExtent=\"0 " << lattice.nx() - 1 << " 0 " << lattice.ny() - 1 << " 0 " << lattice.nz() - 1 << "\" Origin=\""
+      << o[0] << " " << o[1] << " " << o[2] << "\" Spacing=\"" << dx << " " << dx << " " << dx << "\">\n"
       << "    <Piece Extent=\"0 " << lattice.nx() - 1 << " 0 " << lattice.ny() - 1 << " 0 " << lattice.nz() - 1 << "\">\n"
       << "      <PointData Scalars=\"density\" Vectors=\"velocity\">\n"
       << "        <DataArray type=\"Float32\" Name=\"density\" format=\"appended\" offset=\"0\"/>\n"
-      << "        <DataArray type=\"Float32\" Name=\"velocity\" NumberOfComponents=\"3\" format=\"appended\" offset=\"" << 8 + rho_bytes << "\"/>\n"
+      << "        <DataArray type=\"Float32\" Name=\"velocity\" NumberOfComponents=\"3\" format=\"appended\" offset=\"" << 8 + rho_bytes
+      << "\"/>\n"
       << "        <DataArray type=\"UInt8\" Name=\"cell_type\" format=\"appended\" offset=\"" << 16 + rho_bytes + u_bytes << "\"/>\n"
       << "      </PointData>\n    </Piece>\n  </ImageData>\n  <AppendedData encoding=\"raw\">\n   _";
   out.write(reinterpret_cast<const char*>(&rho_bytes), 8);

@@ -32,10 +32,11 @@ std::function<int()> add_bench_command(CLI::App& app) {
     if (o->json) {
       std::cout << r.to_json() << std::endl;
     } else {
-      std::cout << std::fixed << std::setprecision(1) << "backend " << r.backend << ", " << r.size << "^3, " << r.steps << " steps: " << r.mlups
-                << " MLUPS, " << r.us_per_step << " us/step; copy bandwidth " << r.bandwidth_gbs << " GB/s, " << r.bytes_per_cell_update
-                << " B/cell update -> " << std::setprecision(0) << 100.0 * r.roofline_fraction << " % of the copy roofline ("
-                << 100.0 * r.roofline_fraction_inplace << " % of the in-place roofline, " << std::setprecision(1) << r.inplace_bandwidth_gbs << " GB/s)\n";
+      std::cout << std::fixed << std::setprecision(1) << "backend " << r.backend << ", " << r.size << "^3, " << r.steps
+                << " steps: " << r.mlups << " MLUPS, " << r.us_per_step << " us/step; copy bandwidth " << r.bandwidth_gbs << " GB/s, "
+                << r.bytes_per_cell_update << " B/cell update -> " << std::setprecision(0) << 100.0 * r.roofline_fraction
+                << " % of the copy roofline (" << 100.0 * r.roofline_fraction_inplace << " % of the in-place roofline, "
+                << std::setprecision(1) << r.inplace_bandwidth_gbs << " GB/s)\n";
     }
     return 0;
   };

@@ -11,7 +11,8 @@ using namespace ship_lrm::lbm;
 TEST(BluffBody, SchaeferTurek3D1ZDragWithin5Percent) {
   const auto r = run_cylinder_benchmark(10, Backend::Cpu, 60000, 1e-3);
   RecordProperty("drag_coefficient", std::to_string(r.drag_coefficient));
-  std::printf("c_D = %.4f (reference %.5f), c_L = %.4f, %ld steps, %.0f s\n", r.drag_coefficient, kSchaeferTurek3D1ZDrag, r.lift_coefficient, r.steps, r.seconds);
+  std::printf("c_D = %.4f (reference %.5f), c_L = %.4f, %ld steps, %.0f s\n", r.drag_coefficient, kSchaeferTurek3D1ZDrag,
+              r.lift_coefficient, r.steps, r.seconds);
   EXPECT_LT(r.relative_change, 1e-3) << "not converged";
   EXPECT_NEAR(r.drag_coefficient / kSchaeferTurek3D1ZDrag, 1.0, 0.05);
 }

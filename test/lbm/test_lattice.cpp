@@ -85,7 +85,7 @@ TEST(BadInput, RejectsInvalidSetups) {
     Lattice lat(ok);
     EXPECT_THROW(lat.set_wall(8, 0, 0), ConfigError);
     EXPECT_THROW(lat.set_velocity_inlet(4, 4, 4, {0.01f, 0, 0}), ConfigError);  // not on a face (all periodic)
-    EXPECT_THROW(lat.set_moving_wall(1, 1, 1, 0), ConfigError);                   // no such wall motion
+    EXPECT_THROW(lat.set_moving_wall(1, 1, 1, 0), ConfigError);                 // no such wall motion
   }
   EXPECT_THROW(parse_backend("gpu"), ConfigError);
   auto s = make_cpu_solver(Lattice(ok));
@@ -145,8 +145,7 @@ TEST(Walls, ClosedBoxMixedWallsConservesMass) {
   EXPECT_GT(kinetic_energy(f), 0.0);  // the lid drives a flow
 }
 
-// Uniform flow through a periodic box with obstacles removed stays exactly uniform, and the VTK
-// writer produces a file ParaView can read (header and size).
+// The VTK writer produces an image-data file (header and size) and reports unwritable paths.
 TEST(Output, VtiFile) {
   auto s = make_cpu_solver(Lattice(periodic_config(6, 5, 4, 0.1f)));
   const std::string path = ::testing::TempDir() + "/ship_lrm_test.vti";

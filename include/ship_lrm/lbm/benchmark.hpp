@@ -24,7 +24,7 @@ struct LbmBenchmarkResult {
   int size = 0;
   long steps = 0;
   double seconds = 0;
-  double mlups = 0;                  // million lattice (cell) updates per second
+  double mlups = 0;  // million lattice (cell) updates per second
   double us_per_step = 0;
   double bytes_per_cell_update = 0;  // populations read + written + cell type
   double bandwidth_gbs = 0;          // STREAM-like copy in the same run

@@ -30,7 +30,7 @@ struct Macro {
 
 // Collision parameters in lattice units.
 struct CollisionParams {
-  float nu = 1.0f / 6.0f;  // kinematic viscosity; omega = 1 / (3 nu + 1/2) (thesis eq. 6.7)
+  float nu = 1.0f / 6.0f;    // kinematic viscosity; omega = 1 / (3 nu + 1/2) (thesis eq. 6.7)
   float smagorinsky = 0.0f;  // Smagorinsky constant s (0: plain BGK)
 };
 

@@ -22,9 +22,7 @@ enum class CellType : std::uint8_t {
 // edge among their 18 neighbours: they take the general (checked) streaming path.
 constexpr std::uint8_t kGeneralBit = 0x80;
 
-SHIP_LRM_HD constexpr bool is_wall(CellType t) {
-  return t == CellType::Wall || t == CellType::SlipWall || t == CellType::MovingWall;
-}
+SHIP_LRM_HD constexpr bool is_wall(CellType t) { return t == CellType::Wall || t == CellType::SlipWall || t == CellType::MovingWall; }
 SHIP_LRM_HD constexpr bool is_open_boundary(CellType t) {
   return t == CellType::VelocityInlet || t == CellType::PressureOutlet || t == CellType::ImpedanceOutlet;
 }

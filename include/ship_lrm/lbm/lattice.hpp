@@ -24,7 +24,7 @@ class ConfigError : public std::invalid_argument {
 struct FaceCondition {
   FaceType type = FaceType::Wall;
   std::array<float, 3> velocity{0, 0, 0};  // MovingWall / VelocityInlet (lattice units)
-  float density = 1.0f;                      // PressureOutlet
+  float density = 1.0f;                    // PressureOutlet
 };
 
 struct LatticeConfig {
@@ -59,7 +59,8 @@ class Lattice {
   int nz() const { return cfg_.nz; }
   std::size_t cells() const { return static_cast<std::size_t>(cfg_.nx) * cfg_.ny * cfg_.nz; }
   std::size_t index(int x, int y, int z) const {
-    return static_cast<std::size_t>(x) + static_cast<std::size_t>(cfg_.nx) * (static_cast<std::size_t>(y) + static_cast<std::size_t>(cfg_.ny) * z);
+    return static_cast<std::size_t>(x) +
+           static_cast<std::size_t>(cfg_.nx) * (static_cast<std::size_t>(y) + static_cast<std::size_t>(cfg_.ny) * z);
   }
 
   // Per-cell conditions (before the solver is made).

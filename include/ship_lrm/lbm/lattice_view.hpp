@@ -22,8 +22,8 @@ namespace ship_lrm::lbm {
 struct LatticeView {
   int n[3] = {0, 0, 0};
   std::size_t ncells = 0;
-  std::size_t pstride = 0;            // distance between the arrays of two directions (>= ncells)
-  pop_t* g = nullptr;                 // Q * pstride, SoA: g[i * pstride + cell]
+  std::size_t pstride = 0;             // distance between the arrays of two directions (>= ncells)
+  pop_t* g = nullptr;                  // Q * pstride, SoA: g[i * pstride + cell]
   const std::uint8_t* type = nullptr;  // CellType, with kGeneralBit on checked fluid cells
   const std::uint8_t* tag = nullptr;   // fluid: reflection rule (see reflect); moving wall: index
   const float* force = nullptr;        // optional force density field, SoA 3 * ncells
@@ -34,10 +34,10 @@ struct LatticeView {
   CollisionParams params;
   // Open boundary cells (thesis 6.1.3), numbered b = 0 .. nbnd-1.
   int nbnd = 0;
-  const std::uint32_t* bnd_cell = nullptr;  // cell index of b
-  const std::uint8_t* bnd_normal = nullptr;  // outward normal code axis*2 + (sign > 0)
-  const float* bnd_value = nullptr;          // 4 * nbnd: inlet velocity (3) | outlet density ([0])
-  float* aux = nullptr;  // macroscopic state of open-boundary support cells, SoA 4 * ncells
+  const std::uint32_t* bnd_cell = nullptr;    // cell index of b
+  const std::uint8_t* bnd_normal = nullptr;   // outward normal code axis*2 + (sign > 0)
+  const float* bnd_value = nullptr;           // 4 * nbnd: inlet velocity (3) | outlet density ([0])
+  float* aux = nullptr;                       // macroscopic state of open-boundary support cells, SoA 4 * ncells
   const std::int64_t* row_offsets = nullptr;  // 27 * Q neighbour offsets of bulk cells per cell class
 };
 
@@ -48,7 +48,8 @@ SHIP_LRM_HD int cell_class(const int n[3], int x, int y, int z) {
 }
 
 SHIP_LRM_HD std::size_t cell_index(const LatticeView& v, int x, int y, int z) {
-  return static_cast<std::size_t>(x) + static_cast<std::size_t>(v.n[0]) * (static_cast<std::size_t>(y) + static_cast<std::size_t>(v.n[1]) * z);
+  return static_cast<std::size_t>(x) +
+         static_cast<std::size_t>(v.n[0]) * (static_cast<std::size_t>(y) + static_cast<std::size_t>(v.n[1]) * z);
 }
 SHIP_LRM_HD pop_t& pop(const LatticeView& v, int i, std::size_t cell) { return v.g[static_cast<std::size_t>(i) * v.pstride + cell]; }
 
@@ -72,7 +73,8 @@ SHIP_LRM_HD void force_at(const LatticeView& v, std::size_t cell, float F[3]) {
   v.force ? force_at<kForceField>(v, cell, F) : force_at<kUniformForce>(v, cell, F);
 }
 SHIP_LRM_HD int force_mode(const LatticeView& v) {
-  return v.force ? kForceField : ((v.uniform_force[0] != 0.0f || v.uniform_force[1] != 0.0f || v.uniform_force[2] != 0.0f) ? kUniformForce : kNoForce);
+  return v.force ? kForceField
+                 : ((v.uniform_force[0] != 0.0f || v.uniform_force[1] != 0.0f || v.uniform_force[2] != 0.0f) ? kUniformForce : kNoForce);
 }
 
 // What lies at (x,y,z) + d: a fluid-like cell (returns true and its index nb) or a wall or the
@@ -93,7 +95,8 @@ SHIP_LRM_HD bool neighbour(const LatticeView& v, int x, int y, int z, int dx, in
       for (int k = 0; k < 3; ++k) uw[k] = v.face_velocity[f][k];
   }
   if (outside) return false;
-  nb = static_cast<std::size_t>(p[0]) + static_cast<std::size_t>(v.n[0]) * (static_cast<std::size_t>(p[1]) + static_cast<std::size_t>(v.n[1]) * p[2]);
+  nb = static_cast<std::size_t>(p[0]) +
+       static_cast<std::size_t>(v.n[0]) * (static_cast<std::size_t>(p[1]) + static_cast<std::size_t>(v.n[1]) * p[2]);
   const auto t = static_cast<CellType>(v.type[nb] & ~kGeneralBit);
   if (!is_wall(t)) return true;
   if (t == CellType::MovingWall) {
@@ -118,7 +121,8 @@ SHIP_LRM_HD int reflect(const LatticeView& v, std::size_t c, int i, bool arrivin
   if (mode == 0) return d3q19::opp(i);
   const int a = (mode - 1) >> 1, s = ((mode - 1) & 1) ? 1 : -1;
   if (d3q19::c(i, a) != (arriving ? -s : s)) return d3q19::opp(i);
-  return d3q19::index_of(a == 0 ? -d3q19::cx(i) : d3q19::cx(i), a == 1 ? -d3q19::cy(i) : d3q19::cy(i), a == 2 ? -d3q19::cz(i) : d3q19::cz(i));
+  return d3q19::index_of(a == 0 ? -d3q19::cx(i) : d3q19::cx(i), a == 1 ? -d3q19::cy(i) : d3q19::cy(i),
+                         a == 2 ? -d3q19::cz(i) : d3q19::cz(i));
 }
 
 // Moving-wall momentum term for the population arriving with direction d (rho_w = 1).
@@ -195,15 +199,20 @@ SHIP_LRM_HD void cell_coords(const LatticeView& v, std::size_t c, int& x, int& y
   z = static_cast<int>(r / v.n[1]);
 }
 
-// Fluid cells near walls, periodic wraps or the domain edge.
+// Coordinates, pre-collision populations and force of cell c for the step of parity kOdd.
+template <bool kOdd>
+SHIP_LRM_HD void load_cell(const LatticeView& v, std::size_t c, int& x, int& y, int& z, float g[Q], float F[3]) {
+  cell_coords(v, c, x, y, z);
+  gather<kOdd>(v, x, y, z, c, g);
+  force_at(v, c, F);
+}
+
+// Fluid cells near walls or the domain edge.
 template <bool kOdd>
 SHIP_LRM_HD void update_general_cell(const LatticeView& v, std::size_t c) {
   int x, y, z;
-  cell_coords(v, c, x, y, z);
-  float g[Q];
-  gather<kOdd>(v, x, y, z, c, g);
-  float F[3];
-  force_at(v, c, F);
+  float g[Q], F[3];
+  load_cell<kOdd>(v, c, x, y, z, g, F);
   collide(g, F, v.params);
   scatter<kOdd>(v, x, y, z, c, g);
 }
@@ -275,36 +284,37 @@ SHIP_LRM_HD void velocity_gradient(const LatticeView& v, int x, int y, int z, st
   }
 }
 
+// Density and velocity of a fluid cell from its pre-collision populations (step parity kOdd).
+template <bool kOdd>
+SHIP_LRM_HD Macro fluid_macro(const LatticeView& v, std::size_t c) {
+  int x, y, z;
+  float g[Q], F[3];
+  load_cell<kOdd>(v, c, x, y, z, g, F);
+  return macro_from_populations(g, F);
+}
+
 // Pass 1 of a step with open boundaries: state of support cell c (b >= 0 for boundary cells).
 template <bool kOdd>
 SHIP_LRM_HD void update_support_macro(const LatticeView& v, std::size_t c, int b) {
-  int x, y, z;
-  cell_coords(v, c, x, y, z);
-  float g[Q];
-  gather<kOdd>(v, x, y, z, c, g);
-  if (b >= 0) {
-    Macro m = boundary_macro(v, b, g, load_aux(v, c));
-    const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
-    std::size_t in;
-    const int axis = v.bnd_normal[b] >> 1, sgn = (v.bnd_normal[b] & 1) ? 1 : -1;
-    if (t == CellType::PressureOutlet && support_cell(v, x, y, z, axis, -sgn, in)) {
-      // Neumann-type outflow (thesis 6.1.3): the velocity of the interior neighbour (zero normal
-      // gradient) at the same time level, with the prescribed density. Taking u from the known
-      // populations instead (Zou & He) is unstable next to no-slip walls.
-      int xi, yi, zi;
-      cell_coords(v, in, xi, yi, zi);
-      float gi[Q], F[3];
-      gather<kOdd>(v, xi, yi, zi, in, gi);
-      force_at(v, in, F);
-      const Macro mi = macro_from_populations(gi, F);
-      for (int a = 0; a < 3; ++a) m.u[a] = mi.u[a];
-    }
-    store_aux(v, c, m);
-  } else {
-    float F[3];
-    force_at(v, c, F);
-    store_aux(v, c, macro_from_populations(g, F));
+  if (b < 0) {
+    store_aux(v, c, fluid_macro<kOdd>(v, c));
+    return;
   }
+  int x, y, z;
+  float g[Q], F[3];
+  load_cell<kOdd>(v, c, x, y, z, g, F);
+  Macro m = boundary_macro(v, b, g, load_aux(v, c));
+  const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
+  std::size_t in;
+  const int axis = v.bnd_normal[b] >> 1, sgn = (v.bnd_normal[b] & 1) ? 1 : -1;
+  if (t == CellType::PressureOutlet && support_cell(v, x, y, z, axis, -sgn, in)) {
+    // Neumann-type outflow (thesis 6.1.3): the velocity of the interior neighbour (zero normal
+    // gradient) at the same time level, with the prescribed density. Taking u from the known
+    // populations instead (Zou & He) is unstable next to no-slip walls.
+    const Macro mi = fluid_macro<kOdd>(v, in);
+    for (int a = 0; a < 3; ++a) m.u[a] = mi.u[a];
+  }
+  store_aux(v, c, m);
 }
 
 // Pass 2: update of open-boundary cell b (after pass 1 over all support cells).
@@ -312,9 +322,8 @@ template <bool kOdd>
 SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
   const std::size_t c = v.bnd_cell[b];
   int x, y, z;
-  cell_coords(v, c, x, y, z);
-  float g[Q];
-  gather<kOdd>(v, x, y, z, c, g);
+  float g[Q], F[3];
+  load_cell<kOdd>(v, c, x, y, z, g, F);
   const Macro m = load_aux(v, c);
   const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
   if (t == CellType::ImpedanceOutlet) {
@@ -322,12 +331,14 @@ SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
   } else {
     float grad[3][3];
     velocity_gradient(v, x, y, z, c, grad);
-    const float S[6] = {grad[0][0], grad[1][1], grad[2][2], 0.5f * (grad[0][1] + grad[1][0]), 0.5f * (grad[0][2] + grad[2][0]),
+    const float S[6] = {grad[0][0],
+                        grad[1][1],
+                        grad[2][2],
+                        0.5f * (grad[0][1] + grad[1][0]),
+                        0.5f * (grad[0][2] + grad[2][0]),
                         0.5f * (grad[1][2] + grad[2][1])};
     reconstruct_fd(g, m.rho, m.u, S, omega_from_nu(v.params.nu));
   }
-  float F[3];
-  force_at(v, c, F);
   collide(g, F, v.params);
   scatter<kOdd>(v, x, y, z, c, g);
 }
@@ -336,14 +347,7 @@ SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
 // next step). Open-boundary cells report the state their boundary condition imposed last step.
 template <bool kOdd>
 SHIP_LRM_HD Macro cell_macro(const LatticeView& v, std::size_t c) {
-  if (is_open_boundary(static_cast<CellType>(v.type[c] & ~kGeneralBit))) return load_aux(v, c);
-  int x, y, z;
-  cell_coords(v, c, x, y, z);
-  float g[Q];
-  gather<kOdd>(v, x, y, z, c, g);
-  float F[3];
-  force_at(v, c, F);
-  return macro_from_populations(g, F);
+  return is_open_boundary(static_cast<CellType>(v.type[c] & ~kGeneralBit)) ? load_aux(v, c) : fluid_macro<kOdd>(v, c);
 }
 
 }  // namespace ship_lrm::lbm

@@ -8,11 +8,11 @@
 namespace ship_lrm::lbm {
 
 struct UnitReference {
-  double length = 1.0;          // l_ref [m]
-  int nodes = 64;               // N: lattice nodes across l_ref
-  double velocity = 1.0;        // u_ref [m/s]
-  double viscosity = 1.5e-5;    // nu [m^2/s]
-  double density = 1.225;       // rho [kg/m^3]
+  double length = 1.0;                            // l_ref [m]
+  int nodes = 64;                                 // N: lattice nodes across l_ref
+  double velocity = 1.0;                          // u_ref [m/s]
+  double viscosity = 1.5e-5;                      // nu [m^2/s]
+  double density = 1.225;                         // rho [kg/m^3]
   double lattice_velocity = 0.17320508075688773;  // u_ref in lattice units (0.3 / sqrt(3))
 };
 
