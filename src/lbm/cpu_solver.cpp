@@ -87,6 +87,7 @@ class CpuSolver final : public Solver {
     view_.force = force_.empty() ? nullptr : force_.data();
     view_.bnd_cell = lattice_.boundary_cells().data();
     view_.bnd_normal = lattice_.boundary_normals().data();
+    view_.bnd_mask = lattice_.boundary_link_masks().data();
     view_.bnd_value = bnd_value_.data();
     view_.aux = aux_.empty() ? nullptr : aux_.data();
     view_.row_offsets = lattice_.row_offsets().data();
@@ -121,13 +122,15 @@ class CpuSolver final : public Solver {
     const LatticeView& v = view_;
     const auto& support = lattice_.support_cells();
     const auto& support_b = lattice_.support_boundary_index();
+    const auto& support_m = lattice_.support_link_masks();
     const auto& segs = lattice_.bulk_segments();
     const auto& general = lattice_.general_cells();
+    const auto& masks = lattice_.general_link_masks();
     const long ns = static_cast<long>(support.size()), nseg = static_cast<long>(segs.size()), ng = static_cast<long>(general.size());
 #pragma omp parallel
     {
 #pragma omp for schedule(static)
-      for (long k = 0; k < ns; ++k) update_support_macro<kOdd>(v, support[k], support_b[k]);
+      for (long k = 0; k < ns; ++k) update_support_macro<kOdd>(v, support[k], support_b[k], support_m[k]);
         // implicit barrier: every support state is known before any population is overwritten
 #pragma omp for schedule(static) nowait
       for (long s = 0; s < nseg; ++s) {
@@ -138,7 +141,7 @@ class CpuSolver final : public Solver {
         for (std::size_t c = first; c < last; ++c) update_bulk_cell<kOdd, kSmagorinsky, kForce>(v, c, off);
       }
 #pragma omp for schedule(static) nowait
-      for (long k = 0; k < ng; ++k) update_general_cell<kOdd>(v, general[k]);
+      for (long k = 0; k < ng; ++k) update_wall_cell<kOdd>(v, general[k], masks[k]);
 #pragma omp for schedule(static)
       for (int b = 0; b < v.nbnd; ++b) update_boundary_cell<kOdd>(v, b);
     }

@@ -52,9 +52,9 @@ constexpr int kBlock = 128;
 unsigned blocks(std::size_t n) { return static_cast<unsigned>((n + kBlock - 1) / kBlock); }
 
 template <bool kOdd>
-__global__ void support_kernel(LatticeView v, const std::uint32_t* cells, const std::int32_t* bidx, int n) {
+__global__ void support_kernel(LatticeView v, const std::uint32_t* cells, const std::int32_t* bidx, const std::uint32_t* masks, int n) {
   const int k = blockIdx.x * blockDim.x + threadIdx.x;
-  if (k < n) update_support_macro<kOdd>(v, cells[k], bidx[k]);
+  if (k < n) update_support_macro<kOdd>(v, cells[k], bidx[k], masks[k]);
 }
 
 template <bool kOdd, bool kSmagorinsky, int kForce>
@@ -156,6 +156,8 @@ class CudaSolver final : public Solver {
     bnd_value_.upload(lattice_.boundary_values());
     support_.upload(lattice_.support_cells());
     support_b_.upload(lattice_.support_boundary_index());
+    support_m_.upload(lattice_.support_link_masks());
+    bnd_mask_.upload(lattice_.boundary_link_masks());
     row_offsets_.upload(lattice_.row_offsets());
     if (!lattice_.boundary_cells().empty()) aux_.resize(4 * n);
     check(cudaMalloc(&flag_, sizeof(unsigned long long)), "cudaMalloc");
@@ -209,6 +211,7 @@ class CudaSolver final : public Solver {
     view_.force = force_.size() ? force_.data() : nullptr;
     view_.bnd_cell = bnd_cell_.data();
     view_.bnd_normal = bnd_normal_.data();
+    view_.bnd_mask = bnd_mask_.data();
     view_.bnd_value = bnd_value_.data();
     view_.aux = aux_.size() ? aux_.data() : nullptr;
     view_.row_offsets = row_offsets_.data();
@@ -226,7 +229,7 @@ class CudaSolver final : public Solver {
   template <bool kOdd>
   void run_step() {
     const int ns = static_cast<int>(support_.size());
-    if (ns) support_kernel<kOdd><<<blocks(ns), kBlock>>>(view_, support_.data(), support_b_.data(), ns);
+    if (ns) support_kernel<kOdd><<<blocks(ns), kBlock>>>(view_, support_.data(), support_b_.data(), support_m_.data(), ns);
     const int force = force_mode(view_);
     const unsigned nb = blocks(view_.ncells);
     if (view_.params.smagorinsky > 0.0f) {
@@ -272,7 +275,7 @@ class CudaSolver final : public Solver {
   DeviceArray<pop_t> g_;
   DeviceArray<std::uint8_t> type_, tag_, bnd_normal_;
   DeviceArray<WallMotion> walls_;
-  DeviceArray<std::uint32_t> bnd_cell_, support_;
+  DeviceArray<std::uint32_t> bnd_cell_, support_, support_m_, bnd_mask_;
   DeviceArray<std::int32_t> support_b_;
   DeviceArray<float> bnd_value_, force_, aux_;
   DeviceArray<std::int64_t> row_offsets_;

@@ -196,6 +196,33 @@ std::uint8_t Lattice::reflection_mode(int x, int y, int z) const {
   return 0;
 }
 
+std::uint32_t Lattice::link_mask(int x, int y, int z) const {
+  const int n[3] = {cfg_.nx, cfg_.ny, cfg_.nz};
+  std::uint32_t mask = 0;
+  for (int i = 1; i < Q; ++i) {
+    int p[3] = {x + d3q19::cx(i), y + d3q19::cy(i), z + d3q19::cz(i)};
+    bool hit = false, moving = false;
+    for (int a = 0; a < 3; ++a)
+      if (p[a] < 0 || p[a] >= n[a]) {
+        const FaceType f = cfg_.faces[2 * a + (p[a] >= n[a] ? 1 : 0)].type;
+        if (f == FaceType::Periodic) {
+          p[a] = (p[a] + n[a]) % n[a];
+        } else {
+          hit = true;
+          moving = moving || f == FaceType::MovingWall;
+        }
+      }
+    if (!hit) {
+      const auto t = static_cast<CellType>(type_[index(p[0], p[1], p[2])] & ~kGeneralBit);
+      hit = is_wall(t);
+      moving = t == CellType::MovingWall;
+    }
+    if (hit) mask |= 1u << i;
+    if (moving) mask |= kMovingWallLink;
+  }
+  return mask;
+}
+
 int Lattice::add_wall_motion(const WallMotion& m) {
   if (walls_.size() >= 256) throw ConfigError("at most 256 moving walls are supported");
   check_velocity({m.v[0], m.v[1], m.v[2]}, "wall motion");
@@ -274,6 +301,7 @@ void Lattice::finalize() {
           bnd_of[c] = static_cast<std::int32_t>(bnd_cell_.size());
           bnd_cell_.push_back(static_cast<std::uint32_t>(c));
           bnd_normal_.push_back(static_cast<std::uint8_t>(f));
+          bnd_mask_.push_back(link_mask(x, y, z));
           std::array<float, 4> v{0, 0, 0, 0};
           const auto it = values.find(static_cast<std::uint32_t>(c));
           if (it != values.end()) {
@@ -302,6 +330,7 @@ void Lattice::finalize() {
         if (general) {
           type_[c] |= kGeneralBit;
           general_.push_back(static_cast<std::uint32_t>(c));
+          general_mask_.push_back(link_mask(x, y, z));
         } else if (!segments_.empty() && segments_.back().first + segments_.back().count == c && segments_.back().cell_class == cls) {
           ++segments_.back().count;
         } else {
@@ -330,6 +359,8 @@ void Lattice::finalize() {
       if (mark[c]) {
         support_.push_back(static_cast<std::uint32_t>(c));
         support_bnd_.push_back(bnd_of[c]);
+        support_mask_.push_back(link_mask(static_cast<int>(c % n[0]), static_cast<int>((c / n[0]) % n[1]),
+                                          static_cast<int>(c / (static_cast<std::size_t>(n[0]) * n[1]))));
       }
   }
   finalized_ = true;

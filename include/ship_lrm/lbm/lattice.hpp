@@ -87,6 +87,8 @@ class Lattice {
   const std::vector<WallMotion>& wall_motions() const { return walls_; }
   const std::vector<Segment>& bulk_segments() const { return segments_; }
   const std::vector<std::uint32_t>& general_cells() const { return general_; }
+  // Link masks (see gather_masked in lattice_view.hpp) of the general, boundary and support cells.
+  const std::vector<std::uint32_t>& general_link_masks() const { return general_mask_; }
   // Neighbour offsets of bulk cells, Q per cell class (see cell_class in lattice_view.hpp).
   const std::vector<std::int64_t>& row_offsets() const { return row_offsets_; }
   const std::vector<std::uint32_t>& boundary_cells() const { return bnd_cell_; }
@@ -94,11 +96,14 @@ class Lattice {
   const std::vector<float>& boundary_values() const { return bnd_value_; }  // 4 per boundary cell
   const std::vector<std::uint32_t>& support_cells() const { return support_; }
   const std::vector<std::int32_t>& support_boundary_index() const { return support_bnd_; }
+  const std::vector<std::uint32_t>& support_link_masks() const { return support_mask_; }
+  const std::vector<std::uint32_t>& boundary_link_masks() const { return bnd_mask_; }
   std::size_t fluid_cells() const { return fluid_count_; }
 
  private:
   void check_cell(int x, int y, int z, const char* what) const;
   std::uint8_t reflection_mode(int x, int y, int z) const;
+  std::uint32_t link_mask(int x, int y, int z) const;
   void set_open(int x, int y, int z, CellType t, const std::array<float, 4>& value);
   int open_normal(int x, int y, int z) const;  // outward normal code, or -1 if not on an open-able face
 
@@ -108,7 +113,7 @@ class Lattice {
   std::vector<WallMotion> walls_;
   bool finalized_ = false;
   std::vector<Segment> segments_;
-  std::vector<std::uint32_t> general_, bnd_cell_, support_;
+  std::vector<std::uint32_t> general_, general_mask_, bnd_cell_, bnd_mask_, support_, support_mask_;
   std::vector<std::int32_t> support_bnd_;
   std::vector<std::uint8_t> bnd_normal_;
   std::vector<std::int64_t> row_offsets_;

@@ -36,6 +36,7 @@ struct LatticeView {
   int nbnd = 0;
   const std::uint32_t* bnd_cell = nullptr;    // cell index of b
   const std::uint8_t* bnd_normal = nullptr;   // outward normal code axis*2 + (sign > 0)
+  const std::uint32_t* bnd_mask = nullptr;    // link mask of b (see gather_masked)
   const float* bnd_value = nullptr;           // 4 * nbnd: inlet velocity (3) | outlet density ([0])
   float* aux = nullptr;                       // macroscopic state of open-boundary support cells, SoA 4 * ncells
   const std::int64_t* row_offsets = nullptr;  // 27 * Q neighbour offsets of bulk cells per cell class
@@ -217,6 +218,69 @@ SHIP_LRM_HD void update_general_cell(const LatticeView& v, std::size_t c) {
   scatter<kOdd>(v, x, y, z, c, g);
 }
 
+// Link mask of a cell next to walls (Lattice::finalize): bit i set when the cell at c + c_i is a
+// wall or outside a non-periodic face; kMovingWallLink when one of them moves (then the checked
+// gather/scatter, which know the wall velocity per link, are used).
+constexpr std::uint32_t kMovingWallLink = 1u << 31;
+
+// gather/scatter for a cell with a known link mask, reaching fluid neighbours through the
+// offsets of its cell class: the same streaming without searching the neighbourhood.
+template <bool kOdd>
+SHIP_LRM_HD void gather_masked(const LatticeView& v, std::size_t c, std::uint32_t mask, const std::int64_t* off, float g[Q]) {
+  if (!kOdd) {
+    for (int i = 0; i < Q; ++i) g[i] = load_pop(pop(v, i, c));
+    return;
+  }
+  g[0] = load_pop(pop(v, 0, c));
+  for (int i = 1; i < Q; ++i) {
+    const int o = d3q19::opp(i);
+    g[i] = (mask >> o) & 1u ? load_pop(pop(v, d3q19::opp(reflect(v, c, i, true)), c)) : load_pop(pop(v, o, c + off[o]));
+  }
+}
+template <bool kOdd>
+SHIP_LRM_HD void scatter_masked(const LatticeView& v, std::size_t c, std::uint32_t mask, const std::int64_t* off, const float g[Q]) {
+  if (!kOdd) {
+    for (int i = 0; i < Q; ++i) pop(v, d3q19::opp(i), c) = store_pop(g[i]);
+    return;
+  }
+  pop(v, 0, c) = store_pop(g[0]);
+  for (int i = 1; i < Q; ++i) {
+    if ((mask >> i) & 1u)
+      pop(v, reflect(v, c, i, false), c) = store_pop(g[i]);
+    else
+      pop(v, i, c + off[i]) = store_pop(g[i]);
+  }
+}
+
+// Streaming of cell c (coordinates x, y, z) with link mask `mask`: masked where it can, checked
+// where moving walls need the per-link wall velocity.
+template <bool kOdd>
+SHIP_LRM_HD void gather_cell(const LatticeView& v, std::size_t c, int x, int y, int z, std::uint32_t mask, float g[Q]) {
+  if (mask & kMovingWallLink)
+    gather<kOdd>(v, x, y, z, c, g);
+  else
+    gather_masked<kOdd>(v, c, mask, v.row_offsets + Q * cell_class(v.n, x, y, z), g);
+}
+template <bool kOdd>
+SHIP_LRM_HD void scatter_cell(const LatticeView& v, std::size_t c, int x, int y, int z, std::uint32_t mask, const float g[Q]) {
+  if (mask & kMovingWallLink)
+    scatter<kOdd>(v, x, y, z, c, g);
+  else
+    scatter_masked<kOdd>(v, c, mask, v.row_offsets + Q * cell_class(v.n, x, y, z), g);
+}
+
+// Fluid cell next to walls or non-periodic faces, with its link mask.
+template <bool kOdd>
+SHIP_LRM_HD void update_wall_cell(const LatticeView& v, std::size_t c, std::uint32_t mask) {
+  int x, y, z;
+  cell_coords(v, c, x, y, z);
+  float g[Q], F[3];
+  gather_cell<kOdd>(v, c, x, y, z, mask, g);
+  force_at(v, c, F);
+  collide(g, F, v.params);
+  scatter_cell<kOdd>(v, c, x, y, z, mask, g);
+}
+
 // ---- Open boundaries -------------------------------------------------------------------------
 
 SHIP_LRM_HD Macro load_aux(const LatticeView& v, std::size_t c) {
@@ -295,14 +359,16 @@ SHIP_LRM_HD Macro fluid_macro(const LatticeView& v, std::size_t c) {
 
 // Pass 1 of a step with open boundaries: state of support cell c (b >= 0 for boundary cells).
 template <bool kOdd>
-SHIP_LRM_HD void update_support_macro(const LatticeView& v, std::size_t c, int b) {
+SHIP_LRM_HD void update_support_macro(const LatticeView& v, std::size_t c, int b, std::uint32_t mask) {
+  int x, y, z;
+  cell_coords(v, c, x, y, z);
+  float g[Q], F[3];
+  gather_cell<kOdd>(v, c, x, y, z, mask, g);
+  force_at(v, c, F);
   if (b < 0) {
-    store_aux(v, c, fluid_macro<kOdd>(v, c));
+    store_aux(v, c, macro_from_populations(g, F));
     return;
   }
-  int x, y, z;
-  float g[Q], F[3];
-  load_cell<kOdd>(v, c, x, y, z, g, F);
   Macro m = boundary_macro(v, b, g, load_aux(v, c));
   const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
   std::size_t in;
@@ -322,8 +388,10 @@ template <bool kOdd>
 SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
   const std::size_t c = v.bnd_cell[b];
   int x, y, z;
+  cell_coords(v, c, x, y, z);
   float g[Q], F[3];
-  load_cell<kOdd>(v, c, x, y, z, g, F);
+  gather_cell<kOdd>(v, c, x, y, z, v.bnd_mask[b], g);
+  force_at(v, c, F);
   const Macro m = load_aux(v, c);
   const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
   if (t == CellType::ImpedanceOutlet) {
@@ -340,7 +408,7 @@ SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
     reconstruct_fd(g, m.rho, m.u, S, omega_from_nu(v.params.nu));
   }
   collide(g, F, v.params);
-  scatter<kOdd>(v, x, y, z, c, g);
+  scatter_cell<kOdd>(v, c, x, y, z, v.bnd_mask[b], g);
 }
 
 // Macroscopic state of a fluid-like cell for output, valid between steps (kOdd: parity of the
