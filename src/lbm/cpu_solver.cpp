@@ -134,11 +134,19 @@ class CpuSolver final : public Solver {
         // implicit barrier: every support state is known before any population is overwritten
 #pragma omp for schedule(static) nowait
       for (long s = 0; s < nseg; ++s) {
-        const std::size_t first = segs[s].first, last = first + segs[s].count;
-        std::int64_t off[Q];
-        for (int i = 0; i < Q; ++i) off[i] = v.row_offsets[segs[s].cell_class * Q + i];
+        const Segment& sg = segs[s];
+        const std::int64_t* off = v.row_offsets + Q * sg.cell_class;
+        const std::size_t first = sg.first, last = first + sg.count;
+        if (sg.link_mask == 0) {  // bulk: neighbours at fixed offsets (fewer live pointers)
 #pragma omp simd
-        for (std::size_t c = first; c < last; ++c) update_bulk_cell<kOdd, kSmagorinsky, kForce>(v, c, off);
+          for (std::size_t c = first; c < last; ++c) update_bulk_cell<kOdd, kSmagorinsky, kForce>(v, c, off);
+        } else {
+          pop_t* src[Q];
+          pop_t* dst[Q];
+          segment_addresses<kOdd>(v, sg.link_mask, sg.reflection, off, src, dst);
+#pragma omp simd
+          for (std::size_t c = first; c < last; ++c) update_segment_cell<kSmagorinsky, kForce>(v, c, src, dst);
+        }
       }
 #pragma omp for schedule(static) nowait
       for (long k = 0; k < ng; ++k) update_wall_cell<kOdd>(v, general[k], masks[k]);

@@ -315,27 +315,22 @@ void Lattice::finalize() {
           bnd_value_.insert(bnd_value_.end(), v.begin(), v.end());
           continue;
         }
-        // Bulk: every neighbour is a fluid-like cell inside the domain or across a periodic face.
-        bool general = false;
-        for (int i = 1; i < Q && !general; ++i) {
-          int q[3] = {x + d3q19::cx(i), y + d3q19::cy(i), z + d3q19::cz(i)};
-          for (int a = 0; a < 3; ++a)
-            if (q[a] < 0 || q[a] >= n[a]) {
-              if (cfg_.faces[2 * a].type != FaceType::Periodic) general = true;
-              q[a] = (q[a] + n[a]) % n[a];
-            }
-          general = general || is_wall(static_cast<CellType>(type_[index(q[0], q[1], q[2])] & ~kGeneralBit));
-        }
+        // Cells with resting walls among their neighbours stream through their link mask; runs of
+        // cells with equal class, mask and reflection rule form one vectorised segment. Bulk cells
+        // (mask 0) are segments too. Cells next to moving walls take the checked path.
+        const std::uint32_t mask = link_mask(x, y, z);
         const std::uint32_t cls = static_cast<std::uint32_t>(cell_class(n, x, y, z));
-        if (general) {
-          type_[c] |= kGeneralBit;
+        if (mask != 0) type_[c] |= kGeneralBit;  // the GPU kernel's checked path
+        if (mask & kMovingWallLink) {
           general_.push_back(static_cast<std::uint32_t>(c));
-          general_mask_.push_back(link_mask(x, y, z));
-        } else if (!segments_.empty() && segments_.back().first + segments_.back().count == c && segments_.back().cell_class == cls) {
-          ++segments_.back().count;
-        } else {
-          segments_.push_back({static_cast<std::uint32_t>(c), 1, cls});
+          general_mask_.push_back(mask);
+          continue;
         }
+        Segment* last = segments_.empty() ? nullptr : &segments_.back();
+        if (last && last->first + last->count == c && last->cell_class == cls && last->link_mask == mask && last->reflection == tag_[c])
+          ++last->count;
+        else
+          segments_.push_back({static_cast<std::uint32_t>(c), 1, cls, mask, tag_[c]});
       }
   // Support set of the open boundaries: every fluid-like cell within two cells along an axis.
   if (!bnd_cell_.empty()) {

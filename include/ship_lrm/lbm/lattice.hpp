@@ -41,12 +41,15 @@ struct LatticeConfig {
 // u_ref = 0.3 c_s (tables 6.2-6.4); compressibility errors grow with Ma^2.
 constexpr float kMaxSetupMach = 0.4f;
 
-// A contiguous run of bulk cells along x of one cell class (see cell_class in lattice_view.hpp),
-// which selects their neighbour offsets (cells on a periodic face wrap around).
+// A contiguous run of fluid cells along x with the same cell class (neighbour offsets, see
+// cell_class in lattice_view.hpp), link mask (which neighbours are resting walls or outside) and
+// reflection rule: the CPU backend streams a segment with one table of addresses, vectorised.
 struct Segment {
   std::uint32_t first;
   std::uint32_t count;
   std::uint32_t cell_class;
+  std::uint32_t link_mask;
+  std::uint8_t reflection;
 };
 
 class Lattice {
@@ -86,6 +89,7 @@ class Lattice {
   const std::vector<std::uint8_t>& tags() const { return tag_; }
   const std::vector<WallMotion>& wall_motions() const { return walls_; }
   const std::vector<Segment>& bulk_segments() const { return segments_; }
+  // Fluid cells next to moving walls (checked streaming path on the CPU).
   const std::vector<std::uint32_t>& general_cells() const { return general_; }
   // Link masks (see gather_masked in lattice_view.hpp) of the general, boundary and support cells.
   const std::vector<std::uint32_t>& general_link_masks() const { return general_mask_; }

@@ -117,14 +117,14 @@ SHIP_LRM_HD bool neighbour(const LatticeView& v, int x, int y, int z, int dx, in
 // Both rules map the directions that hit walls one-to-one onto the directions that come back from
 // them, so every population slot keeps exactly one writer (AA pattern) and mass is conserved.
 // With arriving = true the inverse map is returned: the outgoing direction that comes back as i.
-SHIP_LRM_HD int reflect(const LatticeView& v, std::size_t c, int i, bool arriving) {
-  const int mode = v.tag[c];
+SHIP_LRM_HD int reflect_by_rule(int mode, int i, bool arriving) {
   if (mode == 0) return d3q19::opp(i);
   const int a = (mode - 1) >> 1, s = ((mode - 1) & 1) ? 1 : -1;
   if (d3q19::c(i, a) != (arriving ? -s : s)) return d3q19::opp(i);
   return d3q19::index_of(a == 0 ? -d3q19::cx(i) : d3q19::cx(i), a == 1 ? -d3q19::cy(i) : d3q19::cy(i),
                          a == 2 ? -d3q19::cz(i) : d3q19::cz(i));
 }
+SHIP_LRM_HD int reflect(const LatticeView& v, std::size_t c, int i, bool arriving) { return reflect_by_rule(v.tag[c], i, arriving); }
 
 // Moving-wall momentum term for the population arriving with direction d (rho_w = 1).
 SHIP_LRM_HD float wall_term(int d, const float uw[3]) {
@@ -191,6 +191,38 @@ SHIP_LRM_HD void update_bulk_cell(const LatticeView& v, std::size_t c, const std
     else
       pop(v, d3q19::opp(i), c) = store_pop(g[i]);
   }
+}
+
+// Streaming addresses of a run of cells with one link mask, reflection rule and neighbour offsets
+// (a Lattice Segment): population i of cell c is read from src[i][c] and its post-collision
+// value written to dst[i][c]. Wall links reflect within the cell (offset 0), the others reach
+// the neighbour; the even step only permutes the cell's own slots.
+template <bool kOdd>
+SHIP_LRM_HD void segment_addresses(const LatticeView& v, std::uint32_t mask, int rule, const std::int64_t* off, pop_t* src[Q],
+                                   pop_t* dst[Q]) {
+  for (int i = 0; i < Q; ++i) {
+    const int o = d3q19::opp(i);
+    if (!kOdd) {
+      src[i] = v.g + i * v.pstride;
+      dst[i] = v.g + o * v.pstride;
+      continue;
+    }
+    src[i] = (mask >> o) & 1u ? v.g + d3q19::opp(reflect_by_rule(rule, i, true)) * v.pstride : v.g + o * v.pstride + off[o];
+    dst[i] = (mask >> i) & 1u ? v.g + reflect_by_rule(rule, i, false) * v.pstride : v.g + i * v.pstride + off[i];
+  }
+}
+
+// Update of one cell of a segment (branch-free: the loop over a segment vectorises).
+template <bool kSmagorinsky, int kForce>
+SHIP_LRM_HD void update_segment_cell(const LatticeView& v, std::size_t c, pop_t* const src[Q], pop_t* const dst[Q]) {
+  float g[Q];
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) g[i] = load_pop(src[i][c]);
+  float F[3];
+  force_at<kForce>(v, c, F);
+  collide<kSmagorinsky, kForce != kNoForce>(g, F, v.params);
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) dst[i][c] = store_pop(g[i]);
 }
 
 SHIP_LRM_HD void cell_coords(const LatticeView& v, std::size_t c, int& x, int& y, int& z) {
