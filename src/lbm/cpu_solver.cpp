@@ -189,9 +189,8 @@ class CpuSolver final : public Solver {
     long long first = std::numeric_limits<long long>::max();
 #pragma omp parallel for schedule(static) reduction(min : first)
     for (long c = 0; c < n; ++c) {
-      const Macro m = next_odd ? macro_at<true>(c) : macro_at<false>(c);
-      const float s2 = m.u[0] * m.u[0] + m.u[1] * m.u[1] + m.u[2] * m.u[2];
-      if (!(s2 <= limit * limit) || !std::isfinite(m.rho)) first = std::min<long long>(first, c);
+      const bool bad = next_odd ? cell_diverged<true>(view_, c, limit * limit) : cell_diverged<false>(view_, c, limit * limit);
+      if (bad) first = std::min<long long>(first, c);
     }
     return first == std::numeric_limits<long long>::max() ? -1 : first;
   }

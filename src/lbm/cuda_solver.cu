@@ -95,9 +95,7 @@ template <bool kOdd>
 __global__ void divergence_kernel(LatticeView v, float limit2, unsigned long long* first) {
   const std::size_t c = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (c >= v.ncells) return;
-  const Macro m = device_macro<kOdd>(v, c);
-  const float s2 = m.u[0] * m.u[0] + m.u[1] * m.u[1] + m.u[2] * m.u[2];
-  if (!(s2 <= limit2) || !isfinite(m.rho)) atomicMin(first, static_cast<unsigned long long>(c));
+  if (cell_diverged<kOdd>(v, c, limit2)) atomicMin(first, static_cast<unsigned long long>(c));
 }
 
 __global__ void init_kernel(LatticeView v, const float* rho, const float* u) {

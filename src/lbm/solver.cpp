@@ -86,7 +86,7 @@ void Solver::check_divergence() {
   const float limit = lattice_.config().mach_guard * std::sqrt(d3q19::cs2);
   const long long c = do_find_divergent(steps_ % 2 == 1, limit);
   if (c < 0) return;
-  const Fields f = fields();
+  const Fields f = fields();  // only on failure: the full (streamed) state of the cell for the message
   const int nx = lattice_.nx(), ny = lattice_.ny();
   const float* u = &f.u[3 * c];
   throw DivergenceError(steps_, static_cast<int>(c % nx), static_cast<int>((c / nx) % ny),

@@ -443,6 +443,22 @@ SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
   scatter_cell<kOdd>(v, c, x, y, z, v.bnd_mask[b], g);
 }
 
+// Divergence guard, local and cheap: density and speed of cell c from its own 19 slots. Between
+// steps these hold the pre-collision populations (next step even) or the post-collision ones in
+// reversed slots (next step odd, kOdd); both give rho exactly and the momentum up to one step's
+// force, enough to catch a non-finite or non-positive density and a runaway speed.
+template <bool kOdd>
+SHIP_LRM_HD bool cell_diverged(const LatticeView& v, std::size_t c, float limit2) {
+  if (is_wall(static_cast<CellType>(v.type[c] & ~kGeneralBit))) return false;
+  float g[Q];
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) g[i] = load_pop(pop(v, kOdd ? d3q19::opp(i) : i, c));
+  float rho, j[3];
+  moments(g, rho, j);
+  const float s2 = (j[0] * j[0] + j[1] * j[1] + j[2] * j[2]) / (rho * rho);
+  return !(s2 <= limit2) || !(rho > 0.0f);
+}
+
 // Macroscopic state of a fluid-like cell for output, valid between steps (kOdd: parity of the
 // next step). Open-boundary cells report the state their boundary condition imposed last step.
 template <bool kOdd>
