@@ -58,7 +58,7 @@ __global__ void support_kernel(LatticeView v, const std::uint32_t* cells, const 
 }
 
 template <bool kOdd, bool kSmagorinsky, int kForce>
-__global__ void fluid_kernel(LatticeView v) {
+__global__ void fluid_kernel(LatticeView v, const std::uint32_t* __restrict__ masks) {
   const std::size_t c = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (c >= v.ncells) return;
   const std::uint8_t t = v.type[c];
@@ -66,8 +66,9 @@ __global__ void fluid_kernel(LatticeView v) {
     int x, y, z;
     cell_coords(v, c, x, y, z);
     update_bulk_cell<kOdd, kSmagorinsky, kForce>(v, c, v.row_offsets + Q * cell_class(v.n, x, y, z));
-  } else if (t == (static_cast<std::uint8_t>(CellType::Fluid) | kGeneralBit))
-    update_general_cell<kOdd>(v, c);
+  } else if (t == (static_cast<std::uint8_t>(CellType::Fluid) | kGeneralBit)) {
+    update_wall_cell<kOdd>(v, c, masks[c]);
+  }
 }
 
 template <bool kOdd>
@@ -136,6 +137,15 @@ __global__ void inplace_kernel(float4* __restrict__ a, std::size_t n) {
   }
 }
 
+// Link mask of every cell (0 for bulk cells), from the Lattice's segments and general cells.
+std::vector<std::uint32_t> full_link_masks(const Lattice& lat) {
+  std::vector<std::uint32_t> m(lat.cells(), 0);
+  for (const Segment& sg : lat.bulk_segments())
+    for (std::uint32_t k = 0; k < sg.count; ++k) m[sg.first + k] = sg.link_mask;
+  for (std::size_t k = 0; k < lat.general_cells().size(); ++k) m[lat.general_cells()[k]] = lat.general_link_masks()[k];
+  return m;
+}
+
 class CudaSolver final : public Solver {
  public:
   explicit CudaSolver(Lattice lattice) : Solver(std::move(lattice)) {
@@ -157,6 +167,7 @@ class CudaSolver final : public Solver {
     support_m_.upload(lattice_.support_link_masks());
     bnd_mask_.upload(lattice_.boundary_link_masks());
     row_offsets_.upload(lattice_.row_offsets());
+    link_mask_.upload(full_link_masks(lattice_));
     if (!lattice_.boundary_cells().empty()) aux_.resize(4 * n);
     check(cudaMalloc(&flag_, sizeof(unsigned long long)), "cudaMalloc");
     sync_view();
@@ -231,13 +242,13 @@ class CudaSolver final : public Solver {
     const int force = force_mode(view_);
     const unsigned nb = blocks(view_.ncells);
     if (view_.params.smagorinsky > 0.0f) {
-      if (force == kNoForce) fluid_kernel<kOdd, true, kNoForce><<<nb, kBlock>>>(view_);
-      if (force == kUniformForce) fluid_kernel<kOdd, true, kUniformForce><<<nb, kBlock>>>(view_);
-      if (force == kForceField) fluid_kernel<kOdd, true, kForceField><<<nb, kBlock>>>(view_);
+      if (force == kNoForce) fluid_kernel<kOdd, true, kNoForce><<<nb, kBlock>>>(view_, link_mask_.data());
+      if (force == kUniformForce) fluid_kernel<kOdd, true, kUniformForce><<<nb, kBlock>>>(view_, link_mask_.data());
+      if (force == kForceField) fluid_kernel<kOdd, true, kForceField><<<nb, kBlock>>>(view_, link_mask_.data());
     } else {
-      if (force == kNoForce) fluid_kernel<kOdd, false, kNoForce><<<nb, kBlock>>>(view_);
-      if (force == kUniformForce) fluid_kernel<kOdd, false, kUniformForce><<<nb, kBlock>>>(view_);
-      if (force == kForceField) fluid_kernel<kOdd, false, kForceField><<<nb, kBlock>>>(view_);
+      if (force == kNoForce) fluid_kernel<kOdd, false, kNoForce><<<nb, kBlock>>>(view_, link_mask_.data());
+      if (force == kUniformForce) fluid_kernel<kOdd, false, kUniformForce><<<nb, kBlock>>>(view_, link_mask_.data());
+      if (force == kForceField) fluid_kernel<kOdd, false, kForceField><<<nb, kBlock>>>(view_, link_mask_.data());
     }
     if (view_.nbnd) boundary_kernel<kOdd><<<blocks(view_.nbnd), kBlock>>>(view_);
   }
@@ -277,6 +288,7 @@ class CudaSolver final : public Solver {
   DeviceArray<std::int32_t> support_b_;
   DeviceArray<float> bnd_value_, force_, aux_;
   DeviceArray<std::int64_t> row_offsets_;
+  DeviceArray<std::uint32_t> link_mask_;  // per cell (read by cells off the bulk path only)
   unsigned long long* flag_ = nullptr;
 };
 

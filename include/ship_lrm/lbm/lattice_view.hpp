@@ -232,24 +232,6 @@ SHIP_LRM_HD void cell_coords(const LatticeView& v, std::size_t c, int& x, int& y
   z = static_cast<int>(r / v.n[1]);
 }
 
-// Coordinates, pre-collision populations and force of cell c for the step of parity kOdd.
-template <bool kOdd>
-SHIP_LRM_HD void load_cell(const LatticeView& v, std::size_t c, int& x, int& y, int& z, float g[Q], float F[3]) {
-  cell_coords(v, c, x, y, z);
-  gather<kOdd>(v, x, y, z, c, g);
-  force_at(v, c, F);
-}
-
-// Fluid cells near walls or the domain edge.
-template <bool kOdd>
-SHIP_LRM_HD void update_general_cell(const LatticeView& v, std::size_t c) {
-  int x, y, z;
-  float g[Q], F[3];
-  load_cell<kOdd>(v, c, x, y, z, g, F);
-  collide(g, F, v.params);
-  scatter<kOdd>(v, x, y, z, c, g);
-}
-
 // Link mask of a cell next to walls (Lattice::finalize): bit i set when the cell at c + c_i is a
 // wall or outside a non-periodic face; kMovingWallLink when one of them moves (then the checked
 // gather/scatter, which know the wall velocity per link, are used).
@@ -380,12 +362,15 @@ SHIP_LRM_HD void velocity_gradient(const LatticeView& v, int x, int y, int z, st
   }
 }
 
-// Density and velocity of a fluid cell from its pre-collision populations (step parity kOdd).
+// Density and velocity of a fluid cell from its pre-collision populations (step parity kOdd;
+// checked gather: any cell, used off the hot path).
 template <bool kOdd>
 SHIP_LRM_HD Macro fluid_macro(const LatticeView& v, std::size_t c) {
   int x, y, z;
+  cell_coords(v, c, x, y, z);
   float g[Q], F[3];
-  load_cell<kOdd>(v, c, x, y, z, g, F);
+  gather<kOdd>(v, x, y, z, c, g);
+  force_at(v, c, F);
   return macro_from_populations(g, F);
 }
 
