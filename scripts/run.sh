@@ -5,10 +5,10 @@
 # reference), writing the flow field to build/cylinder.vti for ParaView.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-"$root/scripts/setup.sh" > "$root/build-setup.log" 2>&1 || { tail -30 "$root/build-setup.log"; exit 1; }
+mkdir -p "$root/build"
+"$root/scripts/setup.sh" > "$root/build/setup.log" 2>&1 || { tail -30 "$root/build/setup.log"; exit 1; }
 # shellcheck disable=SC1091
 source "$root/scripts/env.sh"
-mkdir -p "$root/build"
 if [ $# -eq 0 ]; then
   set -- validate cylinder --resolution 10 --vti "$root/build/cylinder.vti"
 fi
