@@ -4,8 +4,12 @@
 _ship_lrm_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export PATH=/usr/bin:$PATH
 if [ -f "$_ship_lrm_root/build/ws/devel/setup.bash" ]; then
+  # ROS's setup scripts read unset variables: relax `set -u` while they run, if it is on
+  case $- in *u*) _ship_lrm_nounset=1; set +u ;; *) _ship_lrm_nounset=0 ;; esac
   # shellcheck disable=SC1091
   source "$_ship_lrm_root/build/ws/devel/setup.bash"
+  [ "$_ship_lrm_nounset" = 1 ] && set -u
+  unset _ship_lrm_nounset
   export PATH="$_ship_lrm_root/build/ws/devel/lib/ship_lrm:$PATH"
 elif [ -d "$_ship_lrm_root/build/core/bin" ]; then
   export PATH="$_ship_lrm_root/build/core/bin:$PATH"
