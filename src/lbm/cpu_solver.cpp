@@ -105,16 +105,7 @@ class CpuSolver final : public Solver {
       for (int i = 0; i < Q; ++i) pop(v, i, c) = store_pop(equilibrium(i, m.rho, m.u));
       if (v.aux) store_aux(v, c, m);
     }
-    // open-boundary cells start from their prescribed state
-    const auto& cells = lattice_.boundary_cells();
-    for (int b = 0; b < v.nbnd; ++b) {
-      const auto t = static_cast<CellType>(lattice_.types()[cells[b]] & ~kGeneralBit);
-      Macro m = load_aux(v, cells[b]);
-      if (t == CellType::VelocityInlet)
-        for (int a = 0; a < 3; ++a) m.u[a] = bnd_value_[4 * b + a];
-      if (t == CellType::PressureOutlet) m.rho = bnd_value_[4 * b];
-      store_aux(v, cells[b], m);
-    }
+    for (int b = 0; b < v.nbnd; ++b) initialize_boundary_state(v, b);  // prescribed start state
   }
 
   template <bool kOdd, bool kSmagorinsky, int kForce>

@@ -113,13 +113,7 @@ __global__ void init_kernel(LatticeView v, const float* rho, const float* u) {
 __global__ void init_boundary_kernel(LatticeView v) {
   const int b = blockIdx.x * blockDim.x + threadIdx.x;
   if (b >= v.nbnd) return;
-  const std::size_t c = v.bnd_cell[b];
-  const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
-  Macro m = load_aux(v, c);
-  if (t == CellType::VelocityInlet)
-    for (int a = 0; a < 3; ++a) m.u[a] = v.bnd_value[4 * b + a];
-  if (t == CellType::PressureOutlet) m.rho = v.bnd_value[4 * b];
-  store_aux(v, c, m);
+  initialize_boundary_state(v, b);
 }
 
 __global__ void copy_kernel(const float4* __restrict__ a, float4* __restrict__ b, std::size_t n) {

@@ -287,14 +287,12 @@ void Lattice::finalize() {
   for (const auto& [c, v] : explicit_values_) values[c] = v;
   std::vector<std::int32_t> bnd_of(cells(), -1);
   row_offsets_ = bulk_class_offsets(n);
-  fluid_count_ = 0;
   for (int z = 0; z < n[2]; ++z)
     for (int y = 0; y < n[1]; ++y)
       for (int x = 0; x < n[0]; ++x) {
         const std::size_t c = index(x, y, z);
         const auto t = static_cast<CellType>(type_[c]);
         if (is_wall(t)) continue;
-        ++fluid_count_;
         tag_[c] = reflection_mode(x, y, z);
         if (is_open_boundary(t)) {
           const int f = open_normal(x, y, z);

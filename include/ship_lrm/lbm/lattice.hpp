@@ -102,7 +102,6 @@ class Lattice {
   const std::vector<std::int32_t>& support_boundary_index() const { return support_bnd_; }
   const std::vector<std::uint32_t>& support_link_masks() const { return support_mask_; }
   const std::vector<std::uint32_t>& boundary_link_masks() const { return bnd_mask_; }
-  std::size_t fluid_cells() const { return fluid_count_; }
 
  private:
   void check_cell(int x, int y, int z, const char* what) const;
@@ -122,7 +121,6 @@ class Lattice {
   std::vector<std::uint8_t> bnd_normal_;
   std::vector<std::int64_t> row_offsets_;
   std::vector<float> bnd_value_;
-  std::size_t fluid_count_ = 0;
 };
 
 }  // namespace ship_lrm::lbm

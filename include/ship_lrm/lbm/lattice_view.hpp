@@ -329,6 +329,18 @@ SHIP_LRM_HD Macro boundary_macro(const LatticeView& v, int b, const float g[Q], 
   return m;
 }
 
+// Start state of open-boundary cell b: its aux state with the prescribed velocity (inlet) or
+// density (pressure outlet) imposed.
+SHIP_LRM_HD void initialize_boundary_state(const LatticeView& v, int b) {
+  const std::size_t c = v.bnd_cell[b];
+  const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
+  Macro m = load_aux(v, c);
+  if (t == CellType::VelocityInlet)
+    for (int a = 0; a < 3; ++a) m.u[a] = v.bnd_value[4 * b + a];
+  if (t == CellType::PressureOutlet) m.rho = v.bnd_value[4 * b];
+  store_aux(v, c, m);
+}
+
 // Is (x,y,z)+d a fluid-like cell whose aux state is maintained? (Every fluid-like cell within
 // two cells along an axis of an open-boundary cell is in the support set.)
 SHIP_LRM_HD bool support_cell(const LatticeView& v, int x, int y, int z, int axis, int d, std::size_t& nb) {
