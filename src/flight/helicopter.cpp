@@ -120,21 +120,31 @@ void Helicopter::reset(const RigidBodyState& body) {
   engine_state_.rotor_speed = engine_.reference_speed();
   rotor_acceleration_ = 0;
   out_ = HelicopterOutputs{};
-  // A first evaluation with a momentum-theory inflow guess, then the steady inflow for those loads.
+  // A first evaluation with a momentum-theory inflow guess, then the steady inflow for those loads,
+  // and the accelerations that belong to them (so the blades feel the right hub motion from the first
+  // step: with the aerodynamics off the free fall is exact from t = 0).
   rotor::RotorDiskState d = disk_state();
   out_.inflow.mean = -d.hub_velocity + Vec3(0, 0, 0.05 * d.rotor_speed * d.radius);
-  for (int pass = 0; pass < 3; ++pass) {
+  TailRotorResult t;
+  for (int pass = 0; pass < 12; ++pass) {
     out_.rotor = rotor_.evaluate(rotor_inputs());
     d = disk_state();
     inflow_->reset(d);
     out_.inflow = inflow_->inflow();
+    Vec3 m_mr = out_.rotor.moment;
+    m_mr.z() = (p_.main_rotor.clockwise ? -1.0 : 1.0) * out_.rotor.aero_torque;
+    out_.rotor_body.force = mr_to_body_ * out_.rotor.force;
+    out_.rotor_body.moment = mr_to_body_ * m_mr + p_.main_rotor.hub_position.cross(out_.rotor_body.force);
+    Wrench w = other_loads(body_, &t, &out_.airframe);
+    w += out_.rotor_body;
+    const RigidBodyDerivative start = rigid_.derivative(body_, w);
+    out_.acceleration = start.acceleration;
+    out_.angular_acceleration = start.angular_acceleration;
   }
+  out_.tail = t;
   // seed the azimuth record with the current blade forces
   std::vector<Vec3> forces(p_.main_rotor.blades, out_.rotor.aero_force / p_.main_rotor.blades);
   rotor_.force_record().fill(forces);
-  TailRotorResult t;
-  other_loads(body_, &t, &out_.airframe);
-  out_.tail = t;
   engine_.trim(engine_state_, out_.rotor.aero_torque, t.power);
   out_.rotor_speed = engine_state_.rotor_speed;
 }
