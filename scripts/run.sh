@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
 # The main job. Sets up and builds if needed, then runs the default scenario.
-# Until the LRM domain, the flight model and the ship wake land (issues 3-6), the default job is
-# the LBM core's validation flow: the Schaefer & Turek 3D-1Z cylinder (drag against the published
-# reference), writing the flow field to build/cylinder.vti for ParaView.
+# Until the LRM domain, the ship wake and the ROS layer land (issues 4-6), the default job runs what
+# exists: the Bo 105 flight model's trim sweep (build/run/trim.csv, trim.png) and a lateral doublet
+# (build/run/doublet_lateral.*), then the LBM core's validation flow, the Schaefer & Turek 3D-1Z
+# cylinder (drag against the published reference; flow field in build/run/cylinder.vti for ParaView).
+# With arguments, runs `ship_lrm <arguments>` instead.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 mkdir -p "$root/build"
 "$root/scripts/setup.sh" > "$root/build/setup.log" 2>&1 || { tail -30 "$root/build/setup.log"; exit 1; }
 # shellcheck disable=SC1091
 source "$root/scripts/env.sh"
-if [ $# -eq 0 ]; then
-  set -- validate cylinder --resolution 10 --vti "$root/build/cylinder.vti"
+if [ $# -gt 0 ]; then
+  exec ship_lrm "$@"
 fi
-exec ship_lrm "$@"
+out="$root/build/run"
+mkdir -p "$out"
+ship_lrm trim --speeds 0:5:70 --out "$out" --overwrite
+ship_lrm doublet --axis lateral --speed 13.37 --out "$out" --overwrite
+ship_lrm validate cylinder --resolution 10 --vti "$out/cylinder.vti"

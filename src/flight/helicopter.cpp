@@ -8,6 +8,12 @@
 namespace ship_lrm::flight {
 namespace {
 
+Eigen::Matrix3d skew(const Vec3& v) {
+  Eigen::Matrix3d m;
+  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return m;
+}
+
 Eigen::Matrix3d inertia_matrix(const MassParameters& m) {
   Eigen::Matrix3d i;
   i << m.ixx, 0, -m.ixz, 0, m.iyy, 0, -m.ixz, 0, m.izz;
@@ -34,7 +40,8 @@ Helicopter::Helicopter(HelicopterParameters params, std::unique_ptr<rotor::Inflo
       engine_(p_, engine_mode),
       rigid_(p_.mass.mass, inertia_matrix(p_.mass)),
       mr_to_body_(mr_rotation(p_.main_rotor.shaft_tilt)),
-      right_pedal_increases_(p_.main_rotor.clockwise) {
+      right_pedal_increases_(p_.main_rotor.clockwise),
+      inertia_inv_(inertia_matrix(p_.mass).inverse()) {
   angles_ = map_controls(controls_, p_.controls, right_pedal_increases_);
   engine_state_.rotor_speed = engine_.reference_speed();
 }
@@ -42,11 +49,13 @@ Helicopter::Helicopter(HelicopterParameters params, std::unique_ptr<rotor::Inflo
 void Helicopter::set_controls(const PilotControls& c) {
   angles_ = map_controls(c, p_.controls, right_pedal_increases_);
   controls_ = c;
+  other_valid_ = false;
 }
 
 void Helicopter::set_blade_angles(const BladeAngles& a) {
   angles_ = a;
   controls_ = unmap_controls(a, p_.controls, right_pedal_increases_);
+  other_valid_ = false;
 }
 
 rotor::RotorDiskState Helicopter::disk_state() const {
@@ -114,6 +123,7 @@ Wrench Helicopter::other_loads(const RigidBodyState& s, TailRotorResult* tail, A
 
 void Helicopter::reset(const RigidBodyState& body) {
   body_ = body;
+  other_valid_ = false;
   time_ = 0;
   for (auto& b : rotor_.blades()) b = BladeState{};
   rotor_.set_azimuth(0);
@@ -147,6 +157,7 @@ void Helicopter::reset(const RigidBodyState& body) {
   rotor_.force_record().fill(forces);
   engine_.trim(engine_state_, out_.rotor.aero_torque, t.power);
   out_.rotor_speed = engine_state_.rotor_speed;
+  shaft_torque_ = out_.rotor.aero_torque;
 }
 
 void Helicopter::step() {
@@ -156,7 +167,44 @@ void Helicopter::step() {
   inflow_->advance(disk, dt);
   out_.inflow = inflow_->inflow();
   // 2. blades
-  MainRotorLoads loads = rotor_.step(rotor_inputs(), dt, p_.blade_substeps);
+  // The blades and the fuselage share one algebraic loop (hub acceleration <-> blade inertial loads):
+  // solve it every blade sub-step with the fuselage's equations (main_rotor.hpp).
+  const Eigen::Matrix3d& r_mb = mr_to_body_;
+  const Vec3& rh = p_.main_rotor.hub_position;
+  const Vec3 g_body = body_.attitude.conjugate() * Vec3(0, 0, p_.mass.gravity);
+  // airframe, tail rotor and gravity at the current state (computed at the end of the last step)
+  const Wrench other = other_valid_ ? other_ : other_loads(body_, nullptr, nullptr);
+  const double shaft_sign = p_.main_rotor.clockwise ? -1.0 : 1.0;
+  const RotorCoupling couple = [&](const Vec6& w0, const Mat6& k) -> Vec6 {
+    Vec6 x;
+    if (body_held_) {
+      x.head<3>() = -(r_mb.transpose() * g_body);
+      x.tail<3>().setZero();
+      return x;
+    }
+    Vec6 w0m = w0;
+    Mat6 km = k;
+    w0m[5] = shaft_sign * shaft_torque_;  // about the shaft the fuselage feels the drive torque
+    km.row(5).setZero();
+    Mat6 j = Mat6::Zero();  // mr wrench about the hub -> body wrench about the cg
+    j.block<3, 3>(0, 0) = r_mb;
+    j.block<3, 3>(3, 3) = r_mb;
+    j.block<3, 3>(3, 0) = skew(rh) * r_mb;
+    Mat6 l = Mat6::Zero();  // body wrench -> (hub specific force, angular acceleration) in mr axes
+    l.block<3, 3>(0, 0) = r_mb.transpose() / rigid_.mass();
+    l.block<3, 3>(0, 3) = -r_mb.transpose() * skew(rh) * inertia_inv_;
+    l.block<3, 3>(3, 3) = r_mb.transpose() * inertia_inv_;
+    const Vec3 gyro = -body_.rate.cross(rigid_.inertia() * body_.rate);
+    Vec6 l0;
+    l0.head<3>() = r_mb.transpose() * (-g_body - skew(rh) * inertia_inv_ * gyro + body_.rate.cross(body_.rate.cross(rh)));
+    l0.tail<3>() = r_mb.transpose() * inertia_inv_ * gyro;
+    Vec6 wb0;
+    wb0 << other.force, other.moment;
+    wb0 += j * w0m;
+    const Mat6 a = Mat6::Identity() - l * j * km;
+    return a.partialPivLu().solve(l * wb0 + l0);
+  };
+  MainRotorLoads loads = rotor_.step(rotor_inputs(), dt, p_.blade_substeps, &couple);
   out_.rotor = loads;
   // 3. engine and rotor speed
   const double tail_power = aerodynamics_ ? out_.tail.power : 0.0;
@@ -169,6 +217,7 @@ void Helicopter::step() {
   const double shaft_torque = engine_.mode() == EngineMode::ConstantSpeed
                                   ? loads.aero_torque
                                   : (engine_state_.power - tail_power) / std::max(engine_state_.rotor_speed, 1e-3);
+  shaft_torque_ = shaft_torque;
   Vec3 m_mr = loads.moment;
   m_mr.z() = (p_.main_rotor.clockwise ? -1.0 : 1.0) * shaft_torque;
   Wrench rotor_body;
@@ -184,7 +233,9 @@ void Helicopter::step() {
   if (!body_held_) body_ = rigid_.step(body_, dt, total);
   time_ += dt;
   TailRotorResult t;
-  Wrench w = other_loads(body_, &t, &out_.airframe);
+  other_ = other_loads(body_, &t, &out_.airframe);
+  other_valid_ = true;
+  Wrench w = other_;
   out_.tail = t;
   w += rotor_body;
   const RigidBodyDerivative d = rigid_.derivative(body_, w);

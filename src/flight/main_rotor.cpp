@@ -1,6 +1,7 @@
 // Main rotor blade dynamics, blade-element aerodynamics and hub loads (equations in main_rotor.hpp).
 #include "ship_lrm/flight/main_rotor.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ship_lrm::flight {
@@ -40,6 +41,8 @@ MainRotor::MainRotor(const HelicopterParameters& params) : record_(params.main_r
     e.r_over_R = 0.5 * (p.stations[i] + p.stations[i + 1]);
     e.dr = (p.stations[i + 1] - p.stations[i]) * radius_;
     e.s = e.r_over_R * radius_ - hinge_;
+    // tip loss (Prandtl/Wheatley factor B): no lift outboard of B R
+    e.lift_fraction = std::clamp((p.tip_loss - p.stations[i]) / (p.stations[i + 1] - p.stations[i]), 0.0, 1.0);
     elements_.push_back(e);
   }
   polar_storage_ = p.polar;
@@ -112,7 +115,8 @@ MainRotor::BladeResult MainRotor::blade(const MainRotorInputs& in, const Vec3& w
       const double alpha = theta - std::atan2(up, ut);
       const SectionCoefficients c = polar_->lookup(alpha, umag / in.speed_of_sound);
       const double k = half_rho_c * e.dr * umag;
-      const Vec3 df = k * ((c.cl * -up - c.cd * ut) * that + (c.cl * ut - c.cd * up) * nhat);
+      const double cl = c.cl * e.lift_fraction;
+      const Vec3 df = k * ((cl * -up - c.cd * ut) * that + (cl * ut - c.cd * up) * nhat);
       q_flap += e.s * nhat.dot(df);
       q_lag -= e.s * cb * that.dot(df);
       r.aero_force += df;
@@ -125,6 +129,14 @@ MainRotor::BladeResult MainRotor::blade(const MainRotorInputs& in, const Vec3& w
               (inertia_ * cb * cb);
   // Loads passed to the hub: aerodynamic minus the blade's inertia in its motion relative to the
   // fuselage (relative + Coriolis); the rigid-body part is in the aircraft's mass and inertia.
+  // Linearisation in x = (hub specific force, body angular acceleration): see the header.
+  r.flap_gain.head<3>() = -first_moment_ / inertia_ * nhat;
+  r.flap_gain.tail<3>() = -(first_moment_ * p0.cross(nhat) + inertia_ * bhat.cross(nhat)) / inertia_;
+  r.lag_gain.head<3>() = first_moment_ / (inertia_ * cb) * that;
+  r.lag_gain.tail<3>() = (first_moment_ * p0.cross(that) + inertia_ * bhat.cross(that)) / (inertia_ * cb);
+  r.nhat = nhat;
+  r.that_cb = cb * that;
+  r.lever = first_moment_ * p0 + inertia_ * bhat;
   const Vec3 atr_a = 2.0 * w.cross(v0) + arel0;
   const Vec3 atr_b = 2.0 * w.cross(bdot) + bddot0 + r.flap_acc * nhat - r.lag_acc * cb * that;
   r.force = r.aero_force - (mass_ * atr_a + first_moment_ * atr_b);
@@ -162,27 +174,57 @@ MainRotorLoads MainRotor::evaluate(const MainRotorInputs& in) const {
   return l;
 }
 
-MainRotorLoads MainRotor::step(const MainRotorInputs& in, double dt, int substeps) {
-  const Vec3 w = axial_to_c(in.body_rate, clockwise_), wdot = axial_to_c(in.body_angular_acceleration, clockwise_);
-  const Vec3 ahub = polar_to_c(in.hub_specific_force, clockwise_);
+MainRotorLoads MainRotor::step(const MainRotorInputs& in, double dt, int substeps, const RotorCoupling* coupling) {
+  const Vec3 w = axial_to_c(in.body_rate, clockwise_);
   const double right = clockwise_ ? -in.pitch.right : in.pitch.right;
   const double h = dt / substeps;
+  // mirror of the 6-vectors (force-like, moment-like) between mr and the computation frame
+  Vec6 mirror = Vec6::Ones();
+  if (clockwise_) mirror << 1, -1, 1, -1, 1, -1;
   Vec3 f = Vec3::Zero(), m = Vec3::Zero(), fa = Vec3::Zero(), ma = Vec3::Zero();
   double pitch_moment = 0;
+  std::vector<BladeResult>& res = scratch_;
+  res.resize(nblades_);
   for (int sub = 0; sub < substeps; ++sub) {
+    // blade accelerations and hub loads at x = 0, and their dependence on x
+    Vec6 w0 = Vec6::Zero();
+    Mat6 k = Mat6::Zero();
+    for (int i = 0; i < nblades_; ++i) {
+      const double psi = azimuth_ + 2.0 * M_PI * i / nblades_;
+      res[i] = blade(in, w, Vec3::Zero(), Vec3::Zero(), psi, blades_[i], in.pitch.collective, in.pitch.forward, right);
+      const BladeResult& r = res[i];
+      w0.head<3>() += r.force;
+      w0.tail<3>() += r.moment;
+      // u = flap_acc n - lag_acc cb t;  dF = -S du,  dM = -lever x du
+      Eigen::Matrix<double, 3, 6> du = r.nhat * r.flap_gain.transpose() - r.that_cb * r.lag_gain.transpose();
+      k.topRows<3>() += -first_moment_ * du;
+      for (int j = 0; j < 6; ++j) k.block<3, 1>(3, j) += -r.lever.cross(Vec3(du.col(j)));
+    }
+    Vec6 x_c;
+    if (coupling) {
+      const Vec6 w0_mr = mirror.cwiseProduct(w0);
+      const Mat6 k_mr = mirror.asDiagonal() * k * mirror.asDiagonal();
+      x_c = mirror.cwiseProduct((*coupling)(w0_mr, k_mr));
+    } else {
+      x_c.head<3>() = polar_to_c(in.hub_specific_force, clockwise_);
+      x_c.tail<3>() = axial_to_c(in.body_angular_acceleration, clockwise_);
+    }
+    const Vec6 wx = w0 + k * x_c;
+    f += wx.head<3>();
+    m += wx.tail<3>();
     for (int i = 0; i < nblades_; ++i) {
       const double psi = azimuth_ + 2.0 * M_PI * i / nblades_;
       BladeState& b = blades_[i];
-      const BladeResult r = blade(in, w, wdot, ahub, psi, b, in.pitch.collective, in.pitch.forward, right);
-      f += r.force;
-      m += r.moment;
+      const BladeResult& r = res[i];
+      const double flap_acc = r.flap_acc + r.flap_gain.dot(x_c);
+      const double lag_acc = r.lag_acc + r.lag_gain.dot(x_c);
       fa += r.aero_force;
       ma += r.aero_moment;
       pitch_moment += r.pitch_moment;
       record_.deposit(i, clockwise_ ? -psi : psi, polar_to_c(r.aero_force, clockwise_));
       // semi-implicit (symplectic) Euler: rates first, then angles with the new rates
-      b.flap_rate += h * r.flap_acc;
-      b.lag_rate += h * r.lag_acc;
+      b.flap_rate += h * flap_acc;
+      b.lag_rate += h * lag_acc;
       b.flap += h * b.flap_rate;
       b.lag += h * b.lag_rate;
       if (!std::isfinite(b.flap) || !std::isfinite(b.lag))

@@ -124,6 +124,7 @@ HelicopterParameters load_helicopter_parameters(const std::string& path) {
   mr.chord = r.number("main_rotor.chord", 0.01, 0.3 * mr.radius);
   mr.twist = r.number("main_rotor.twist", -40.0, 40.0) * kDeg;
   mr.twist_reference = r.number("main_rotor.twist_reference", 0.0, 1.0);
+  mr.tip_loss = r.number("main_rotor.tip_loss", 0.8, 1.0);
   mr.stations = r.numbers("main_rotor.stations", 2, 64, 0.0, 1.0);
   for (size_t i = 1; i < mr.stations.size(); ++i)
     if (mr.stations[i] <= mr.stations[i - 1]) throw ParameterError(path + ": field 'main_rotor.stations' must be strictly increasing");

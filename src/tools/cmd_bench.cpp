@@ -4,6 +4,9 @@
 
 #include "commands.hpp"
 #include "ship_lrm/lbm/benchmark.hpp"
+#ifdef SHIP_LRM_HAVE_FLIGHT
+#include "ship_lrm/flight/flight_benchmark.hpp"
+#endif
 
 namespace ship_lrm::tools {
 
@@ -26,7 +29,38 @@ std::function<int()> add_bench_command(CLI::App& app) {
   lbm->add_option("--seconds", o->seconds, "target run time when --steps is 0")->check(CLI::PositiveNumber);
   lbm->add_option("--smagorinsky", o->smagorinsky, "Smagorinsky constant (0: plain BGK)")->check(CLI::Range(0.0, 1.0));
   lbm->add_flag("--json", o->json, "print one JSON object");
-  return [o, lbm]() -> int {
+#ifdef SHIP_LRM_HAVE_FLIGHT
+  auto* flight = bench->add_subcommand("flight", "Bo 105 flight model (blade elements + Pitt-Peters) speed, one thread, at the coupling step");
+  struct FlightOpts {
+    double seconds = 200, speed = 25;
+    std::string config;
+    bool json = false;
+  };
+  auto fo = std::make_shared<FlightOpts>();
+  flight->add_option("--seconds", fo->seconds, "simulated seconds to time")->check(CLI::Range(0.01, 3600.0))->capture_default_str();
+  flight->add_option("--speed", fo->speed, "trimmed speed it flies from, m/s")->check(CLI::Range(0.0, 90.0))->capture_default_str();
+  flight->add_option("--config", fo->config, "helicopter parameter file (default: the shipped config/bo105.yaml)");
+  flight->add_flag("--json", fo->json, "print one JSON object");
+#endif
+  return [o, lbm
+#ifdef SHIP_LRM_HAVE_FLIGHT
+          ,
+          fo, flight
+#endif
+  ]() -> int {
+#ifdef SHIP_LRM_HAVE_FLIGHT
+    if (flight->parsed()) {
+      const auto p = fo->config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(fo->config);
+      const auto r = flight::run_flight_benchmark(p, fo->seconds, fo->speed);
+      if (fo->json)
+        std::cout << r.to_json() << std::endl;
+      else
+        std::cout << std::fixed << std::setprecision(2) << "flight model: " << r.steps << " steps of " << 1e3 * r.time_step << " ms in "
+                  << r.wall_seconds << " s: " << r.microseconds_per_step << " us/step, " << std::setprecision(0) << r.real_time_factor
+                  << " x real time (one thread)\n";
+      return 0;
+    }
+#endif
     if (!lbm->parsed()) return -1;
     const auto r = lbm::run_lbm_benchmark(lbm::parse_backend(o->backend), o->size, o->steps, o->smagorinsky, o->seconds);
     if (o->json) {

@@ -11,5 +11,9 @@ namespace ship_lrm::tools {
 std::function<int()> add_bench_command(CLI::App& app);
 std::function<int()> add_units_command(CLI::App& app);
 std::function<int()> add_validate_command(CLI::App& app);
+#ifdef SHIP_LRM_HAVE_FLIGHT
+std::function<int()> add_trim_command(CLI::App& app);
+std::function<int()> add_doublet_command(CLI::App& app);
+#endif
 
 }  // namespace ship_lrm::tools

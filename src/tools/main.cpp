@@ -6,12 +6,19 @@
 #include "commands.hpp"
 #include "ship_lrm/lbm/lattice.hpp"
 #include "ship_lrm/lbm/solver.hpp"
+#ifdef SHIP_LRM_HAVE_FLIGHT
+#include "ship_lrm/flight/parameters.hpp"
+#endif
 
 int main(int argc, char** argv) {
   CLI::App app{"ship_lrm - Local Recalculation Model: lattice-Boltzmann rotor / ship air-wake simulation"};
   app.require_subcommand(1);
-  const std::vector<std::function<int()>> actions = {ship_lrm::tools::add_bench_command(app), ship_lrm::tools::add_units_command(app),
-                                                     ship_lrm::tools::add_validate_command(app)};
+  std::vector<std::function<int()>> actions = {ship_lrm::tools::add_bench_command(app), ship_lrm::tools::add_units_command(app),
+                                               ship_lrm::tools::add_validate_command(app)};
+#ifdef SHIP_LRM_HAVE_FLIGHT
+  actions.push_back(ship_lrm::tools::add_trim_command(app));
+  actions.push_back(ship_lrm::tools::add_doublet_command(app));
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -22,6 +29,17 @@ int main(int argc, char** argv) {
       const int rc = action();  // -1: its sub-command was not chosen
       if (rc >= 0) return rc;
     }
+#ifdef SHIP_LRM_HAVE_FLIGHT
+  } catch (const ship_lrm::flight::ParameterError& e) {
+    std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
+    return 2;
+#endif
+  } catch (const CLI::ValidationError& e) {
+    std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
+    return 2;
   } catch (const ship_lrm::lbm::ConfigError& e) {
     std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
     return 2;

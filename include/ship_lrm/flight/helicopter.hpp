@@ -41,21 +41,30 @@ class Helicopter {
                       EngineMode engine_mode = EngineMode::Governed);
 
   const HelicopterParameters& parameters() const { return p_; }
-  void set_controls(const PilotControls& c);  // throws ControlError for out-of-range input
+  void set_controls(const PilotControls& c);  // throws ControlError for out-of-range input (keeps the old controls)
   const PilotControls& controls() const { return controls_; }
   void set_blade_angles(const BladeAngles& a);
   const BladeAngles& blade_angles() const { return angles_; }
   bool right_pedal_increases_tail_pitch() const { return right_pedal_increases_; }
 
-  void set_wind(const Vec3& wind_ned) { wind_ = wind_ned; }
-  void set_aerodynamics(bool on) { aerodynamics_ = on; }
+  void set_wind(const Vec3& wind_ned) {
+    wind_ = wind_ned;
+    other_valid_ = false;
+  }
+  void set_aerodynamics(bool on) {
+    aerodynamics_ = on;
+    other_valid_ = false;
+  }
   // Hold the fuselage (prescribed motion: trim, whirl tower); rotor, inflow and engine still advance.
   void set_body_held(bool held) { body_held_ = held; }
 
   // Put the fuselage in `body`, the blades at zero flap and lag, the rotor at its reference speed,
   // and start the inflow model and engine in equilibrium with the resulting loads.
   void reset(const RigidBodyState& body);
-  void set_body(const RigidBodyState& body) { body_ = body; }
+  void set_body(const RigidBodyState& body) {
+    body_ = body;
+    other_valid_ = false;
+  }
   void step();
 
   double time() const { return time_; }
@@ -87,6 +96,7 @@ class Helicopter {
   RigidBody rigid_;
   Eigen::Matrix3d mr_to_body_;
   bool right_pedal_increases_;
+  Eigen::Matrix3d inertia_inv_;
 
   PilotControls controls_;
   BladeAngles angles_;
@@ -97,6 +107,9 @@ class Helicopter {
   RigidBodyState body_;
   EngineState engine_state_;
   double rotor_acceleration_ = 0;
+  double shaft_torque_ = 0;
+  Wrench other_;              // airframe + tail rotor + gravity at body_ (valid while other_valid_)
+  bool other_valid_ = false;  // N m delivered to the main rotor in the last step
   double tail_inflow_ = 0.05;
   HelicopterOutputs out_;
 };

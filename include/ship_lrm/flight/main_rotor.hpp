@@ -15,8 +15,16 @@
 // absolute acceleration of the blade point at s when beta'' = zeta'' = 0. In vacuo this gives the
 // flap frequency lambda_beta^2 = 1 + e S / I + K_beta / (I Omega^2) (checked by a test).
 // The springs follow from the configured flap and lag frequency ratios.
+//
+// Rotor-fuselage coupling: the blade accelerations depend on the hub's acceleration and the hub loads
+// on the blade accelerations (an algebraic loop; the blades carry about a third of the roll inertia).
+// Both are affine in x = (hub specific force, body angular acceleration), so each sub-step hands
+// W(x) = W0 + K x to a coupling function that solves the fuselage's equations together with it and
+// returns x; a one-step-delayed x instead would make the lag/roll coupling numerically unstable at
+// the 1.8 ms coupling step.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "ship_lrm/flight/parameters.hpp"
@@ -59,13 +67,21 @@ struct MainRotorLoads {
   double blade_pitch_moment = 0;  // N m, sum of the section moments about the pitch axes of all blades
 };
 
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+// Given the hub wrench W(x) = w0 + k x (force and moment about the hub, mr axes) returns x = (hub
+// specific force, body angular acceleration) in mr axes.
+using RotorCoupling = std::function<Vec6(const Vec6& w0, const Mat6& k)>;
+
 class MainRotor {
  public:
   explicit MainRotor(const HelicopterParameters& params);
 
   // Integrate the blades over dt in `substeps` semi-implicit Euler steps; the azimuth advances with
   // the rotor speed. Returns the step-averaged hub loads and records the blade forces over azimuth.
-  MainRotorLoads step(const MainRotorInputs& in, double dt, int substeps);
+  // With `coupling`, x is solved with the fuselage every sub-step (in.hub_specific_force and
+  // in.body_angular_acceleration are then ignored); without it they are taken as given.
+  MainRotorLoads step(const MainRotorInputs& in, double dt, int substeps, const RotorCoupling* coupling = nullptr);
   // Loads and blade accelerations for the current state without advancing it.
   MainRotorLoads evaluate(const MainRotorInputs& in) const;
 
@@ -93,11 +109,14 @@ class MainRotor {
  private:
   struct Element {
     double s, r_over_R, dr;
+    double lift_fraction;  // part of the element inboard of the tip-loss radius B R
   };
   struct BladeResult {
     double flap_acc, lag_acc;
     Vec3 force, moment, aero_force, aero_moment;  // computation frame
     double pitch_moment;
+    Vec6 flap_gain, lag_gain;  // d(flap_acc)/dx, d(lag_acc)/dx, x in the computation frame
+    Vec3 nhat, that_cb, lever;  // for the loads' dependence on the blade accelerations
   };
   BladeResult blade(const MainRotorInputs& in, const Vec3& w, const Vec3& wdot, const Vec3& ahub, double psi, const BladeState& b,
                     double theta0, double fwd, double right) const;
@@ -112,6 +131,7 @@ class MainRotor {
   std::vector<BladeState> blades_;
   double azimuth_ = 0;
   rotor::AzimuthForceRecord record_;
+  std::vector<BladeResult> scratch_;
 };
 
 }  // namespace ship_lrm::flight

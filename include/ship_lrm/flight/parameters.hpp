@@ -26,7 +26,7 @@ struct MainRotorParameters {
   double shaft_tilt = 0;                                     // rad, forward
   bool clockwise = false;                                    // seen from above
   int blades = 4;
-  double radius = 0, chord = 0, twist = 0, twist_reference = 0.75;
+  double radius = 0, chord = 0, twist = 0, twist_reference = 0.75, tip_loss = 1.0;
   std::vector<double> stations;  // r/R of the element edges
   double rotor_speed = 0;        // rad/s nominal
   double blade_flap_inertia = 0; // kg m^2 about the rotor centre

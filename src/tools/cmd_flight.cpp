@@ -1,0 +1,201 @@
+// `ship_lrm trim` and `ship_lrm doublet`: Bo 105 flight-model sweeps, written as CSV (header row) and
+// plotted to PNG by scripts/plot_flight.py.
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "commands.hpp"
+#include "ship_lrm/flight/doublet.hpp"
+#include "ship_lrm/flight/trim.hpp"
+
+namespace ship_lrm::tools {
+namespace fs = std::filesystem;
+using namespace ship_lrm::flight;
+
+namespace {
+
+constexpr double kDeg = 180.0 / M_PI;
+
+// "0:5:70" (start:step:stop) or "0,10,25".
+std::vector<double> parse_speeds(const std::string& text) {
+  std::vector<double> v;
+  const auto num = [&](const std::string& s) {
+    size_t pos = 0;
+    double x = 0;
+    try {
+      x = std::stod(s, &pos);
+    } catch (const std::exception&) {
+      pos = 0;
+    }
+    if (pos != s.size() || !std::isfinite(x)) throw CLI::ValidationError("--speeds", "'" + s + "' is not a number");
+    return x;
+  };
+  if (text.find(':') != std::string::npos) {
+    std::stringstream ss(text);
+    std::string a, b, c;
+    if (!std::getline(ss, a, ':') || !std::getline(ss, b, ':') || !std::getline(ss, c) || c.find(':') != std::string::npos)
+      throw CLI::ValidationError("--speeds", "expected start:step:stop, e.g. 0:5:70");
+    const double start = num(a), step = num(b), stop = num(c);
+    if (step <= 0 || stop < start) throw CLI::ValidationError("--speeds", "needs step > 0 and stop >= start");
+    for (int i = 0; start + i * step <= stop + 1e-9; ++i) v.push_back(start + i * step);
+  } else {
+    std::stringstream ss(text);
+    std::string a;
+    while (std::getline(ss, a, ',')) v.push_back(num(a));
+  }
+  if (v.empty() || v.size() > 400) throw CLI::ValidationError("--speeds", "needs 1 to 400 speeds");
+  for (double x : v)
+    if (x < 0 || x > 100) throw CLI::ValidationError("--speeds", "speeds must lie in 0..100 m/s");
+  return v;
+}
+
+HelicopterParameters load_config(const std::string& path) { return path.empty() ? load_default_bo105() : load_helicopter_parameters(path); }
+
+// Refuses to overwrite a user's files unless asked to.
+void prepare_output(const fs::path& dir, const std::vector<std::string>& names, bool overwrite) {
+  fs::create_directories(dir);
+  for (const auto& n : names)
+    if (fs::exists(dir / n) && !overwrite)
+      throw std::runtime_error((dir / n).string() + " exists; pass --overwrite to replace it");
+}
+
+std::string scripts_directory() {
+  if (const char* env = std::getenv("SHIP_LRM_SCRIPTS_DIR")) return env;
+#ifdef SHIP_LRM_SOURCE_DIR
+  return std::string(SHIP_LRM_SOURCE_DIR) + "/scripts";
+#else
+  return "scripts";
+#endif
+}
+
+// Plot with Debian's python3 + matplotlib; a missing plotter is a warning, the CSV stays.
+void plot(const std::string& kind, const fs::path& csv, const fs::path& png, const std::string& reference) {
+  std::string cmd = "/usr/bin/env python3 '" + scripts_directory() + "/plot_flight.py' " + kind + " '" + csv.string() + "' '" + png.string() + "'";
+  if (!reference.empty()) cmd += " --reference '" + reference + "'";
+  if (std::system(cmd.c_str()) != 0)
+    std::cerr << "ship_lrm: warning: plotting failed (needs python3 with matplotlib); the CSV " << csv << " is complete\n";
+  else
+    std::cout << "wrote " << png.string() << "\n";
+}
+
+}  // namespace
+
+std::function<int()> add_trim_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("trim", "Trim the Bo 105 in steady level flight over a range of speeds (thesis figs. 8.5-8.7)");
+  struct Opts {
+    std::string speeds = "0:5:70", inflow = "pitt_peters", out, config, reference;
+    bool overwrite = false, no_plot = false;
+  };
+  auto o = std::make_shared<Opts>();
+  cmd->add_option("--speeds", o->speeds, "speeds in m/s: start:step:stop or a comma list")->capture_default_str();
+  cmd->add_option("--inflow", o->inflow, "inflow model (pitt_peters; lrm arrives with the LRM domain)")
+      ->check(CLI::IsMember({"pitt_peters"}))
+      ->capture_default_str();
+  cmd->add_option("--out", o->out, "output directory (trim.csv, trim.png)")->required();
+  cmd->add_option("--config", o->config, "helicopter parameter file (default: the shipped config/bo105.yaml)");
+  cmd->add_option("--reference", o->reference, "CSV of measured trim data with the same column names, plotted as points");
+  cmd->add_flag("--overwrite", o->overwrite, "replace existing output files");
+  cmd->add_flag("--no-plot", o->no_plot, "write the CSV only");
+  return [o, cmd]() -> int {
+    if (!cmd->parsed()) return -1;
+    const auto speeds = parse_speeds(o->speeds);
+    const HelicopterParameters p = load_config(o->config);
+    const fs::path dir(o->out);
+    prepare_output(dir, {"trim.csv", "trim.png"}, o->overwrite);
+    Helicopter heli(p);
+    std::ofstream csv(dir / "trim.csv");
+    csv << "speed_m_s,converged,residual,iterations,total_power_kW,main_power_kW,tail_power_kW,collective_pct,longitudinal_pct,"
+           "lateral_pct,pedal_pct,collective_deg,forward_cyclic_deg,right_cyclic_deg,tail_pitch_deg,pitch_deg,roll_deg,thrust_N,"
+           "induced_velocity_m_s,coning_deg,disk_tilt_forward_deg,disk_tilt_right_deg\n";
+    TrimOptions opt;
+    int failed = 0;
+    for (double v : speeds) {
+      TrimTarget t;
+      t.speed = v;
+      const TrimResult r = trim(heli, t, opt);
+      std::cout << r.message << "\n";
+      if (r.converged) {
+        opt.initial_controls = r.controls;
+        opt.initial_attitude = Vec3(r.roll, r.pitch, 0);
+      } else {
+        ++failed;
+      }
+      csv << std::setprecision(6) << v << "," << (r.converged ? 1 : 0) << "," << r.residual << "," << r.iterations << ","
+          << r.total_power / 1e3 << "," << r.main_power / 1e3 << "," << r.tail_power / 1e3 << "," << r.controls.collective << ","
+          << r.controls.longitudinal << "," << r.controls.lateral << "," << r.controls.pedal << "," << r.angles.main.collective * kDeg
+          << "," << r.angles.main.forward * kDeg << "," << r.angles.main.right * kDeg << "," << r.angles.tail * kDeg << ","
+          << r.pitch * kDeg << "," << r.roll * kDeg << "," << r.thrust << "," << r.induced_velocity << "," << r.flapping.x() * kDeg
+          << "," << r.flapping.y() * kDeg << "," << r.flapping.z() * kDeg << "\n";
+    }
+    csv.close();
+    std::cout << "wrote " << (dir / "trim.csv").string() << "\n";
+    if (!o->no_plot) plot("trim", dir / "trim.csv", dir / "trim.png", o->reference);
+    if (failed) {
+      std::cerr << "ship_lrm: trim did not converge at " << failed << " of " << speeds.size()
+                << " speeds (converged = 0 in the CSV, with the residual)\n";
+      return 4;
+    }
+    return 0;
+  };
+}
+
+std::function<int()> add_doublet_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("doublet", "Doublet input from trimmed flight (thesis fig. 8.8 and appendix VI)");
+  struct Opts {
+    std::string axis = "lateral", out, config, engine = "governed";
+    double speed = 13.37, amplitude = 10, start = 1, pulse = 1, duration = 8;
+    bool overwrite = false, no_plot = false;
+  };
+  auto o = std::make_shared<Opts>();
+  cmd->add_option("--axis", o->axis, "control moved: lateral, longitudinal, collective or pedal")
+      ->check(CLI::IsMember({"lateral", "longitudinal", "collective", "pedal"}))
+      ->capture_default_str();
+  cmd->add_option("--speed", o->speed, "trimmed speed, m/s")->check(CLI::Range(0.0, 90.0))->capture_default_str();
+  cmd->add_option("--amplitude", o->amplitude, "% of control travel")->check(CLI::Range(0.1, 50.0))->capture_default_str();
+  cmd->add_option("--start", o->start, "s of trimmed flight before the doublet")->check(CLI::Range(0.0, 60.0))->capture_default_str();
+  cmd->add_option("--pulse", o->pulse, "s, length of each half of the doublet")->check(CLI::Range(0.01, 20.0))->capture_default_str();
+  cmd->add_option("--duration", o->duration, "s simulated")->check(CLI::Range(0.1, 600.0))->capture_default_str();
+  cmd->add_option("--engine", o->engine, "governed (rotor speed can droop) or constant (rotor speed held)")
+      ->check(CLI::IsMember({"governed", "constant"}))
+      ->capture_default_str();
+  cmd->add_option("--out", o->out, "output directory (doublet_<axis>.csv, .png)")->required();
+  cmd->add_option("--config", o->config, "helicopter parameter file (default: the shipped config/bo105.yaml)");
+  cmd->add_flag("--overwrite", o->overwrite, "replace existing output files");
+  cmd->add_flag("--no-plot", o->no_plot, "write the CSV only");
+  return [o, cmd]() -> int {
+    if (!cmd->parsed()) return -1;
+    if (o->duration <= o->start) throw CLI::ValidationError("--duration", "must be longer than --start");
+    const HelicopterParameters p = load_config(o->config);
+    DoubletOptions d;
+    d.axis = parse_control_axis(o->axis);
+    d.speed = o->speed;
+    d.amplitude = o->amplitude;
+    d.start = o->start;
+    d.pulse = o->pulse;
+    d.duration = o->duration;
+    d.engine = o->engine == "governed" ? EngineMode::Governed : EngineMode::ConstantSpeed;
+    const fs::path dir(o->out);
+    const std::string base = "doublet_" + o->axis;
+    prepare_output(dir, {base + ".csv", base + ".png"}, o->overwrite);
+    const DoubletResult r = run_doublet(p, d);
+    std::cout << r.trim.message << "\n";
+    std::ofstream csv(dir / (base + ".csv"));
+    csv << "time_s,collective_pct,longitudinal_pct,lateral_pct,pedal_pct,p_deg_s,q_deg_s,r_deg_s,roll_deg,pitch_deg,yaw_deg,"
+           "rate_of_descent_m_s,rotor_speed_ratio,main_power_kW,engine_power_kW\n";
+    for (const auto& s : r.samples)
+      csv << std::setprecision(6) << s.time << "," << s.controls.collective << "," << s.controls.longitudinal << "," << s.controls.lateral
+          << "," << s.controls.pedal << "," << s.rates.x() * kDeg << "," << s.rates.y() * kDeg << "," << s.rates.z() * kDeg << ","
+          << s.attitude.x() * kDeg << "," << s.attitude.y() * kDeg << "," << s.attitude.z() * kDeg << "," << s.rate_of_descent << ","
+          << s.rotor_speed_ratio << "," << s.main_power / 1e3 << "," << s.engine_power / 1e3 << "\n";
+    csv.close();
+    std::cout << "wrote " << (dir / (base + ".csv")).string() << "\n";
+    if (!o->no_plot) plot("doublet", dir / (base + ".csv"), dir / (base + ".png"), "");
+    return 0;
+  };
+}
+
+}  // namespace ship_lrm::tools
