@@ -34,8 +34,7 @@ AirframeLoads Airframe::evaluate(const AirframeInputs& in) const {
     const double drag = q * (fus_.drag_area + fus_.drag_area_per_rad2 * (a_eff * a_eff + beta * beta));
     const double lift = q * fus_.lift_area_per_rad * std::sin(a_eff) * std::cos(a_eff);
     const Vec3 dir = v / speed;
-    out.fuselage.force = -drag * dir + lift * Vec3(std::sin(alpha), 0, -std::cos(alpha)) +
-                         Vec3(0, -q * fus_.side_area_per_rad * beta, 0);
+    out.fuselage.force = -drag * dir + lift * Vec3(std::sin(alpha), 0, -std::cos(alpha)) + Vec3(0, -q * fus_.side_area_per_rad * beta, 0);
     out.fuselage.moment = Vec3(0, q * fus_.pitch_volume_per_rad * std::sin(a_eff) * std::cos(a_eff), q * fus_.yaw_volume_per_rad * beta);
   }
   // download: vertical drag in the rotor wake (relative vertical flow of fuselage and wake)

@@ -16,17 +16,22 @@ ControlAxis parse_control_axis(const std::string& n) {
 
 std::string to_string(ControlAxis a) {
   switch (a) {
-    case ControlAxis::Collective: return "collective";
-    case ControlAxis::Longitudinal: return "longitudinal";
-    case ControlAxis::Lateral: return "lateral";
-    case ControlAxis::Pedal: return "pedal";
+    case ControlAxis::Collective:
+      return "collective";
+    case ControlAxis::Longitudinal:
+      return "longitudinal";
+    case ControlAxis::Lateral:
+      return "lateral";
+    case ControlAxis::Pedal:
+      return "pedal";
   }
   return "?";
 }
 
 DoubletResult run_doublet(const HelicopterParameters& params, const DoubletOptions& opt) {
   if (!(opt.amplitude > 0 && opt.amplitude <= 50)) throw std::invalid_argument("doublet amplitude must lie in (0, 50] % of travel");
-  if (!(opt.pulse > 0) || !(opt.start >= 0) || !(opt.duration > opt.start)) throw std::invalid_argument("doublet needs pulse > 0 and duration > start >= 0");
+  if (!(opt.pulse > 0) || !(opt.start >= 0) || !(opt.duration > opt.start))
+    throw std::invalid_argument("doublet needs pulse > 0 and duration > start >= 0");
   if (!(opt.speed >= 0 && opt.speed <= 90)) throw std::invalid_argument("doublet speed must lie in 0..90 m/s");
   Helicopter heli(params, nullptr, opt.engine);
   DoubletResult out;
@@ -42,8 +47,10 @@ DoubletResult run_doublet(const HelicopterParameters& params, const DoubletOptio
     const double t = i * dt;
     PilotControls c = trimmed;
     double delta = 0;
-    if (t >= opt.start && t < opt.start + opt.pulse) delta = opt.amplitude;
-    else if (t >= opt.start + opt.pulse && t < opt.start + 2 * opt.pulse) delta = -opt.amplitude;
+    if (t >= opt.start && t < opt.start + opt.pulse)
+      delta = opt.amplitude;
+    else if (t >= opt.start + opt.pulse && t < opt.start + 2 * opt.pulse)
+      delta = -opt.amplitude;
     double* axis = opt.axis == ControlAxis::Collective     ? &c.collective
                    : opt.axis == ControlAxis::Longitudinal ? &c.longitudinal
                    : opt.axis == ControlAxis::Lateral      ? &c.lateral

@@ -14,8 +14,8 @@ std::string FlightBenchmarkResult::to_json() const {
   std::ostringstream os;
   os << "{\"benchmark\": \"flight\", \"model\": \"bo105 blade element + pitt_peters\", \"threads\": 1, \"speed_m_s\": " << speed
      << ", \"time_step_s\": " << time_step << ", \"steps\": " << steps << ", \"simulated_s\": " << simulated_seconds
-     << ", \"wall_s\": " << wall_seconds << ", \"us_per_step\": " << microseconds_per_step
-     << ", \"real_time_factor\": " << real_time_factor << "}";
+     << ", \"wall_s\": " << wall_seconds << ", \"us_per_step\": " << microseconds_per_step << ", \"real_time_factor\": " << real_time_factor
+     << "}";
   return os.str();
 }
 

@@ -140,8 +140,8 @@ MainRotor::BladeResult MainRotor::blade(const MainRotorInputs& in, const Vec3& w
   const Vec3 atr_a = 2.0 * w.cross(v0) + arel0;
   const Vec3 atr_b = 2.0 * w.cross(bdot) + bddot0 + r.flap_acc * nhat - r.lag_acc * cb * that;
   r.force = r.aero_force - (mass_ * atr_a + first_moment_ * atr_b);
-  r.moment = r.aero_moment -
-             (mass_ * p0.cross(atr_a) + first_moment_ * (p0.cross(atr_b) + bhat.cross(atr_a)) + inertia_ * bhat.cross(atr_b));
+  r.moment =
+      r.aero_moment - (mass_ * p0.cross(atr_a) + first_moment_ * (p0.cross(atr_b) + bhat.cross(atr_a)) + inertia_ * bhat.cross(atr_b));
   return r;
 }
 

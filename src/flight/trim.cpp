@@ -119,8 +119,9 @@ TrimResult trim(Helicopter& heli, const TrimTarget& target, const TrimOptions& o
   for (res.iterations = 0; res.iterations < opt.max_iterations; ++res.iterations) {
     res.residual = cur.residual.norm();
     if (debug)
-      std::fprintf(stderr, "trim %d: x = [%g %g %g %g %g %g] residual %g = [%g %g %g %g %g %g]\n", res.iterations, x[0], x[1], x[2], x[3], x[4],
-                   x[5], res.residual, cur.residual[0], cur.residual[1], cur.residual[2], cur.residual[3], cur.residual[4], cur.residual[5]);
+      std::fprintf(stderr, "trim %d: x = [%g %g %g %g %g %g] residual %g = [%g %g %g %g %g %g]\n", res.iterations, x[0], x[1], x[2], x[3],
+                   x[4], x[5], res.residual, cur.residual[0], cur.residual[1], cur.residual[2], cur.residual[3], cur.residual[4],
+                   cur.residual[5]);
     if (!std::isfinite(res.residual)) break;
     if (res.residual < opt.tolerance) {
       res.converged = true;

@@ -30,7 +30,8 @@ std::function<int()> add_bench_command(CLI::App& app) {
   lbm->add_option("--smagorinsky", o->smagorinsky, "Smagorinsky constant (0: plain BGK)")->check(CLI::Range(0.0, 1.0));
   lbm->add_flag("--json", o->json, "print one JSON object");
 #ifdef SHIP_LRM_HAVE_FLIGHT
-  auto* flight = bench->add_subcommand("flight", "Bo 105 flight model (blade elements + Pitt-Peters) speed, one thread, at the coupling step");
+  auto* flight =
+      bench->add_subcommand("flight", "Bo 105 flight model (blade elements + Pitt-Peters) speed, one thread, at the coupling step");
   struct FlightOpts {
     double seconds = 200, speed = 25;
     std::string config;

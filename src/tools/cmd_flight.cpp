@@ -59,8 +59,7 @@ HelicopterParameters load_config(const std::string& path) { return path.empty() 
 void prepare_output(const fs::path& dir, const std::vector<std::string>& names, bool overwrite) {
   fs::create_directories(dir);
   for (const auto& n : names)
-    if (fs::exists(dir / n) && !overwrite)
-      throw std::runtime_error((dir / n).string() + " exists; pass --overwrite to replace it");
+    if (fs::exists(dir / n) && !overwrite) throw std::runtime_error((dir / n).string() + " exists; pass --overwrite to replace it");
 }
 
 std::string scripts_directory() {
@@ -74,7 +73,8 @@ std::string scripts_directory() {
 
 // Plot with Debian's python3 + matplotlib; a missing plotter is a warning, the CSV stays.
 void plot(const std::string& kind, const fs::path& csv, const fs::path& png, const std::string& reference) {
-  std::string cmd = "/usr/bin/env python3 '" + scripts_directory() + "/plot_flight.py' " + kind + " '" + csv.string() + "' '" + png.string() + "'";
+  std::string cmd =
+      "/usr/bin/env python3 '" + scripts_directory() + "/plot_flight.py' " + kind + " '" + csv.string() + "' '" + png.string() + "'";
   if (!reference.empty()) cmd += " --reference '" + reference + "'";
   if (std::system(cmd.c_str()) != 0)
     std::cerr << "ship_lrm: warning: plotting failed (needs python3 with matplotlib); the CSV " << csv << " is complete\n";
@@ -128,8 +128,8 @@ std::function<int()> add_trim_command(CLI::App& app) {
           << r.total_power / 1e3 << "," << r.main_power / 1e3 << "," << r.tail_power / 1e3 << "," << r.controls.collective << ","
           << r.controls.longitudinal << "," << r.controls.lateral << "," << r.controls.pedal << "," << r.angles.main.collective * kDeg
           << "," << r.angles.main.forward * kDeg << "," << r.angles.main.right * kDeg << "," << r.angles.tail * kDeg << ","
-          << r.pitch * kDeg << "," << r.roll * kDeg << "," << r.thrust << "," << r.induced_velocity << "," << r.flapping.x() * kDeg
-          << "," << r.flapping.y() * kDeg << "," << r.flapping.z() * kDeg << "\n";
+          << r.pitch * kDeg << "," << r.roll * kDeg << "," << r.thrust << "," << r.induced_velocity << "," << r.flapping.x() * kDeg << ","
+          << r.flapping.y() * kDeg << "," << r.flapping.z() * kDeg << "\n";
     }
     csv.close();
     std::cout << "wrote " << (dir / "trim.csv").string() << "\n";

@@ -11,7 +11,9 @@ TEST(ForceHarmonics, RecoversKnownCoefficients) {
   // Per-blade force F_b(psi) = a0 + a1 cos psi + b2 sin 2 psi + a4 cos 4 psi + b9 sin 9 psi; four blades
   // each record their own force, so the total F(psi) = 4 F_b(psi) in every coefficient.
   const Vec3 a0(100, -20, -6000), a1(30, 0, 500), b2(0, 40, -200), a4(5, 5, 80), b9(1, 2, 3);
-  const auto fb = [&](double psi) { return Vec3(a0 + a1 * std::cos(psi) + b2 * std::sin(2 * psi) + a4 * std::cos(4 * psi) + b9 * std::sin(9 * psi)); };
+  const auto fb = [&](double psi) {
+    return Vec3(a0 + a1 * std::cos(psi) + b2 * std::sin(2 * psi) + a4 * std::cos(4 * psi) + b9 * std::sin(9 * psi));
+  };
   AzimuthForceRecord rec(4);
   // blades pass the azimuths at an arbitrary step (not a multiple of the 5 deg samples)
   const double step = 2.0 * M_PI / 78.3;

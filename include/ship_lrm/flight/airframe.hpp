@@ -9,8 +9,8 @@
 namespace ship_lrm::flight {
 
 struct AirframeInputs {
-  Vec3 air_velocity = Vec3::Zero();  // velocity of the aircraft's cg relative to the air, body axes
-  Vec3 rate = Vec3::Zero();          // body rates
+  Vec3 air_velocity = Vec3::Zero();    // velocity of the aircraft's cg relative to the air, body axes
+  Vec3 rate = Vec3::Zero();            // body rates
   Vec3 rotor_downwash = Vec3::Zero();  // main-rotor wake velocity at the airframe, body axes (down is +z)
   double density = 1.225;
 };

@@ -16,11 +16,11 @@ std::string to_string(ControlAxis a);
 
 struct DoubletOptions {
   ControlAxis axis = ControlAxis::Lateral;
-  double speed = 13.37;     // m/s (the lateral doublet of thesis fig. 8.8)
-  double amplitude = 10.0;  // % of travel
-  double start = 1.0;       // s after the trim
-  double pulse = 1.0;       // s, length of each half
-  double duration = 8.0;    // s
+  double speed = 13.37;           // m/s (the lateral doublet of thesis fig. 8.8)
+  double amplitude = 10.0;        // % of travel
+  double start = 1.0;             // s after the trim
+  double pulse = 1.0;             // s, length of each half
+  double duration = 8.0;          // s
   double sample_interval = 0.01;  // s
   EngineMode engine = EngineMode::Governed;
 };
@@ -28,10 +28,10 @@ struct DoubletOptions {
 struct DoubletSample {
   double time;
   PilotControls controls;
-  Vec3 rates;      // p, q, r, rad/s
-  Vec3 attitude;   // roll, pitch, yaw, rad
-  double rate_of_descent;   // m/s, positive down
-  double rotor_speed_ratio; // Omega / Omega_ref
+  Vec3 rates;                       // p, q, r, rad/s
+  Vec3 attitude;                    // roll, pitch, yaw, rad
+  double rate_of_descent;           // m/s, positive down
+  double rotor_speed_ratio;         // Omega / Omega_ref
   double main_power, engine_power;  // W
 };
 

@@ -14,8 +14,8 @@ namespace ship_lrm::flight {
 enum class EngineMode { ConstantSpeed, Governed };
 
 struct EngineState {
-  double rotor_speed = 0;   // rad/s
-  double power = 0;         // W delivered by the engine
+  double rotor_speed = 0;  // rad/s
+  double power = 0;        // W delivered by the engine
   double governor_integral = 0;
 };
 

@@ -24,13 +24,13 @@ namespace ship_lrm::flight {
 // Diagnostics of the last step.
 struct HelicopterOutputs {
   double time = 0;
-  MainRotorLoads rotor;          // mr axes
-  TailRotorResult tail;          // body axes
-  AirframeLoads airframe;        // body axes
-  Wrench rotor_body;             // main-rotor hub loads in body axes about the cg (as applied)
-  double main_power = 0, tail_power = 0, engine_power = 0;  // W
-  double rotor_speed = 0;        // rad/s
-  rotor::RotorInflow inflow;     // mr axes
+  MainRotorLoads rotor;                                                   // mr axes
+  TailRotorResult tail;                                                   // body axes
+  AirframeLoads airframe;                                                 // body axes
+  Wrench rotor_body;                                                      // main-rotor hub loads in body axes about the cg (as applied)
+  double main_power = 0, tail_power = 0, engine_power = 0;                // W
+  double rotor_speed = 0;                                                 // rad/s
+  rotor::RotorInflow inflow;                                              // mr axes
   Vec3 acceleration = Vec3::Zero(), angular_acceleration = Vec3::Zero();  // body axes, du/dt and dp/dt
 };
 

@@ -50,10 +50,10 @@ struct BladePitch {
 // Everything the rotor needs from outside for one step; vectors in mr axes.
 struct MainRotorInputs {
   BladePitch pitch;
-  rotor::RotorInflow inflow;        // air velocity relative to the mr frame over the disk
-  Vec3 body_rate = Vec3::Zero();    // rad/s
+  rotor::RotorInflow inflow;      // air velocity relative to the mr frame over the disk
+  Vec3 body_rate = Vec3::Zero();  // rad/s
   Vec3 body_angular_acceleration = Vec3::Zero();
-  Vec3 hub_specific_force = Vec3::Zero();  // hub acceleration minus gravity, m/s^2 (-g in hover)
+  Vec3 hub_specific_force = Vec3::Zero();          // hub acceleration minus gravity, m/s^2 (-g in hover)
   double rotor_speed = 0, rotor_acceleration = 0;  // rad/s, rad/s^2
   double density = 1.225, speed_of_sound = 340.3;
   bool aerodynamics = true;
@@ -63,8 +63,8 @@ struct MainRotorInputs {
 struct MainRotorLoads {
   Vec3 force = Vec3::Zero(), moment = Vec3::Zero();            // aerodynamic + blade inertial (relative motion), about the hub
   Vec3 aero_force = Vec3::Zero(), aero_moment = Vec3::Zero();  // aerodynamic only
-  double aero_torque = 0;  // N m resisting the rotation (shaft torque needed)
-  double blade_pitch_moment = 0;  // N m, sum of the section moments about the pitch axes of all blades
+  double aero_torque = 0;                                      // N m resisting the rotation (shaft torque needed)
+  double blade_pitch_moment = 0;                               // N m, sum of the section moments about the pitch axes of all blades
 };
 
 using Vec6 = Eigen::Matrix<double, 6, 1>;
@@ -115,7 +115,7 @@ class MainRotor {
     double flap_acc, lag_acc;
     Vec3 force, moment, aero_force, aero_moment;  // computation frame
     double pitch_moment;
-    Vec6 flap_gain, lag_gain;  // d(flap_acc)/dx, d(lag_acc)/dx, x in the computation frame
+    Vec6 flap_gain, lag_gain;   // d(flap_acc)/dx, d(lag_acc)/dx, x in the computation frame
     Vec3 nhat, that_cb, lever;  // for the loads' dependence on the blade accelerations
   };
   BladeResult blade(const MainRotorInputs& in, const Vec3& w, const Vec3& wdot, const Vec3& ahub, double psi, const BladeState& b,

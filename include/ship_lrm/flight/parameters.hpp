@@ -23,13 +23,13 @@ struct MassParameters {
 
 struct MainRotorParameters {
   Eigen::Vector3d hub_position = Eigen::Vector3d::Zero();  // m, body FRD from cg
-  double shaft_tilt = 0;                                     // rad, forward
-  bool clockwise = false;                                    // seen from above
+  double shaft_tilt = 0;                                   // rad, forward
+  bool clockwise = false;                                  // seen from above
   int blades = 4;
   double radius = 0, chord = 0, twist = 0, twist_reference = 0.75, tip_loss = 1.0;
-  std::vector<double> stations;  // r/R of the element edges
-  double rotor_speed = 0;        // rad/s nominal
-  double blade_flap_inertia = 0; // kg m^2 about the rotor centre
+  std::vector<double> stations;   // r/R of the element edges
+  double rotor_speed = 0;         // rad/s nominal
+  double blade_flap_inertia = 0;  // kg m^2 about the rotor centre
   double flap_frequency_ratio = 1, hinge_offset = 0, lag_frequency_ratio = 0.65, lag_damping_ratio = 0.05;
   double rotor_inertia = 0;  // kg m^2
   AirfoilTable polar;

@@ -14,10 +14,10 @@ namespace ship_lrm::flight {
 using Vec3 = Eigen::Vector3d;
 
 struct RigidBodyState {
-  Vec3 position = Vec3::Zero();                          // m, NED
-  Vec3 velocity = Vec3::Zero();                          // m/s, body FRD
+  Vec3 position = Vec3::Zero();                                  // m, NED
+  Vec3 velocity = Vec3::Zero();                                  // m/s, body FRD
   Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  // body -> NED
-  Vec3 rate = Vec3::Zero();                              // rad/s, body (p, q, r)
+  Vec3 rate = Vec3::Zero();                                      // rad/s, body (p, q, r)
 
   // Euler angles (roll Phi, pitch Theta, yaw Psi), rad, aerospace 3-2-1 sequence.
   Vec3 euler() const;

@@ -12,15 +12,15 @@
 namespace ship_lrm::flight {
 
 struct TrimTarget {
-  double speed = 0;         // m/s, flight-path speed relative to the air
-  double climb_angle = 0;   // rad, flight path above the horizon
-  double heading = 0;       // rad
+  double speed = 0;        // m/s, flight-path speed relative to the air
+  double climb_angle = 0;  // rad, flight path above the horizon
+  double heading = 0;      // rad
 };
 
 struct TrimOptions {
   int max_iterations = 40;
-  double tolerance = 2e-3;        // on the residual norm (see TrimResult::residual)
-  int settle_revolutions = 3;     // per evaluation, before the averaging revolution
+  double tolerance = 2e-3;     // on the residual norm (see TrimResult::residual)
+  int settle_revolutions = 3;  // per evaluation, before the averaging revolution
   std::optional<PilotControls> initial_controls;
   std::optional<Vec3> initial_attitude;  // (roll, pitch, yaw), rad
 };
@@ -33,13 +33,13 @@ struct TrimResult {
   std::string message;
   PilotControls controls;
   BladeAngles angles;
-  double roll = 0, pitch = 0;      // rad
+  double roll = 0, pitch = 0;                              // rad
   double main_power = 0, tail_power = 0, total_power = 0;  // W, revolution averages
-  double thrust = 0;               // N, aerodynamic, along -z_mr
-  double induced_velocity = 0;     // m/s, mean induced velocity of the inflow model
-  double download = 0;             // N, vertical fuselage load (positive down)
-  Vec3 flapping = Vec3::Zero();    // coning, forward and right disk tilt, rad
-  RigidBodyState body;             // trimmed fuselage state
+  double thrust = 0;                                       // N, aerodynamic, along -z_mr
+  double induced_velocity = 0;                             // m/s, mean induced velocity of the inflow model
+  double download = 0;                                     // N, vertical fuselage load (positive down)
+  Vec3 flapping = Vec3::Zero();                            // coning, forward and right disk tilt, rad
+  RigidBodyState body;                                     // trimmed fuselage state
 };
 
 // Trims `heli` (its parameters, inflow model and engine mode) and leaves it in the trimmed state,

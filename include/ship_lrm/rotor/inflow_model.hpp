@@ -19,8 +19,8 @@ namespace ship_lrm::rotor {
 
 using Vec3 = Eigen::Vector3d;
 
-constexpr int kHarmonicOrder = 9;     // N_harm of thesis 6.5 (k = 0..9)
-constexpr int kAzimuthSamples = 72;   // N_psi of thesis 6.5
+constexpr int kHarmonicOrder = 9;    // N_harm of thesis 6.5 (k = 0..9)
+constexpr int kAzimuthSamples = 72;  // N_psi of thesis 6.5
 
 // v(r, psi) = mean + sine (r/R) sin psi + cosine (r/R) cos psi: the air velocity relative to the mr
 // frame (which moves and rotates with the fuselage), in mr axes, m/s.
@@ -41,10 +41,10 @@ struct RotorForceHarmonics {
 
 // What an inflow model gets from the flight model every coupling step.
 struct RotorDiskState {
-  double time = 0;         // s
-  double radius = 0;       // m
-  double rotor_speed = 0;  // rad/s (magnitude)
-  double density = 0;      // kg/m^3
+  double time = 0;                   // s
+  double radius = 0;                 // m
+  double rotor_speed = 0;            // rad/s (magnitude)
+  double density = 0;                // kg/m^3
   Vec3 hub_velocity = Vec3::Zero();  // hub velocity relative to the undisturbed air, mr axes, m/s
   Vec3 body_rate = Vec3::Zero();     // angular velocity of the mr frame, mr axes, rad/s
   Vec3 aero_force = Vec3::Zero();    // total aerodynamic force on the blades, mr axes, N
