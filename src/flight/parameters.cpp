@@ -196,14 +196,16 @@ HelicopterParameters load_helicopter_parameters(const std::string& path) {
   return p;
 }
 
-std::string default_config_directory() {
-  if (const char* env = std::getenv("SHIP_LRM_CONFIG_DIR")) return env;
+std::string shipped_directory(const char* env_var, const char* subdir) {
+  if (const char* env = std::getenv(env_var)) return env;
 #ifdef SHIP_LRM_SOURCE_DIR
-  return std::string(SHIP_LRM_SOURCE_DIR) + "/config";
+  return std::string(SHIP_LRM_SOURCE_DIR) + "/" + subdir;
 #else
-  return "config";
+  return subdir;
 #endif
 }
+
+std::string default_config_directory() { return shipped_directory("SHIP_LRM_CONFIG_DIR", "config"); }
 
 HelicopterParameters load_default_bo105() { return load_helicopter_parameters(default_config_directory() + "/bo105.yaml"); }
 

@@ -62,19 +62,10 @@ void prepare_output(const fs::path& dir, const std::vector<std::string>& names, 
     if (fs::exists(dir / n) && !overwrite) throw std::runtime_error((dir / n).string() + " exists; pass --overwrite to replace it");
 }
 
-std::string scripts_directory() {
-  if (const char* env = std::getenv("SHIP_LRM_SCRIPTS_DIR")) return env;
-#ifdef SHIP_LRM_SOURCE_DIR
-  return std::string(SHIP_LRM_SOURCE_DIR) + "/scripts";
-#else
-  return "scripts";
-#endif
-}
-
 // Plot with Debian's python3 + matplotlib; a missing plotter is a warning, the CSV stays.
 void plot(const std::string& kind, const fs::path& csv, const fs::path& png, const std::string& reference) {
   std::string cmd =
-      "/usr/bin/env python3 '" + scripts_directory() + "/plot_flight.py' " + kind + " '" + csv.string() + "' '" + png.string() + "'";
+      "/usr/bin/env python3 '" + shipped_directory("SHIP_LRM_SCRIPTS_DIR", "scripts") + "/plot_flight.py' " + kind + " '" + csv.string() + "' '" + png.string() + "'";
   if (!reference.empty()) cmd += " --reference '" + reference + "'";
   if (std::system(cmd.c_str()) != 0)
     std::cerr << "ship_lrm: warning: plotting failed (needs python3 with matplotlib); the CSV " << csv << " is complete\n";

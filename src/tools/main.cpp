@@ -29,14 +29,6 @@ int main(int argc, char** argv) {
       const int rc = action();  // -1: its sub-command was not chosen
       if (rc >= 0) return rc;
     }
-#ifdef SHIP_LRM_HAVE_FLIGHT
-  } catch (const ship_lrm::flight::ParameterError& e) {
-    std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
-    return 2;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
-    return 2;
-#endif
   } catch (const CLI::ValidationError& e) {
     std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
     return 2;
@@ -46,6 +38,14 @@ int main(int argc, char** argv) {
   } catch (const ship_lrm::lbm::DivergenceError& e) {
     std::cerr << "ship_lrm: " << e.what() << "\n";
     return 3;
+#ifdef SHIP_LRM_HAVE_FLIGHT
+  } catch (const ship_lrm::flight::ParameterError& e) {
+    std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
+    return 2;
+#endif
+  } catch (const std::invalid_argument& e) {  // e.g. controls outside their travel, bad doublet settings
+    std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "ship_lrm: error: " << e.what() << "\n";
     return 1;

@@ -82,6 +82,8 @@ HelicopterParameters load_helicopter_parameters(const std::string& path);
 // The Bo 105 file shipped with the package (config/bo105.yaml), found via SHIP_LRM_CONFIG_DIR
 // (environment) or the source tree's config/ directory.
 std::string default_config_directory();
+// A directory shipped with the package: $env_var when set, else <source tree>/subdir (e.g. scripts).
+std::string shipped_directory(const char* env_var, const char* subdir);
 HelicopterParameters load_default_bo105();
 
 }  // namespace ship_lrm::flight
