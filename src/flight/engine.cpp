@@ -12,12 +12,14 @@ Engine::Engine(const HelicopterParameters& p, EngineMode mode)
       max_power_(p.engine.max_power),
       tau_(p.engine.time_constant),
       kp_(p.engine.governor_gain),
-      ki_(p.engine.governor_integral) {}
+      ki_(p.engine.governor_integral),
+      anticipation_(p.engine.load_anticipation) {}
 
 void Engine::trim(EngineState& s, double main_torque, double tail_power) const {
   s.rotor_speed = omega_ref_;
   s.power = main_torque * omega_ref_ + tail_power;
   s.governor_integral = 0;
+  s.trim_power = s.power;
 }
 
 double Engine::advance(EngineState& s, double main_torque, double tail_power, double dt) const {
@@ -29,7 +31,9 @@ double Engine::advance(EngineState& s, double main_torque, double tail_power, do
   }
   const double err = omega_ref_ - s.rotor_speed;
   s.governor_integral += err * dt;
-  const double command = std::clamp(load + inertia_ * s.rotor_speed * (kp_ * err + ki_ * s.governor_integral), 0.0, max_power_);
+  // the governor's datum: the trimmed power, plus the anticipated share of the load change
+  const double datum = s.trim_power + anticipation_ * (load - s.trim_power);
+  const double command = std::clamp(datum + inertia_ * s.rotor_speed * (kp_ * err + ki_ * s.governor_integral), 0.0, max_power_);
   // anti-windup: stop integrating while the command sits on a limit
   if (command == max_power_ || command == 0.0) s.governor_integral -= err * dt;
   s.power += dt / tau_ * (command - s.power);

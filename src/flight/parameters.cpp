@@ -176,6 +176,7 @@ HelicopterParameters load_helicopter_parameters(const std::string& path) {
   e.time_constant = r.number("engine.time_constant", 0.001, 10.0);
   e.governor_gain = r.number("engine.governor_gain", 0.0, 1000.0);
   e.governor_integral = r.number("engine.governor_integral", 0.0, 1000.0);
+  e.load_anticipation = r.number("engine.load_anticipation", 0.0, 1.0);
 
   auto& c = p.controls;
   const auto coll = r.numbers("controls.collective_pitch", 2, 2, -30.0, 40.0);

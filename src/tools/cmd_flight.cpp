@@ -64,8 +64,8 @@ void prepare_output(const fs::path& dir, const std::vector<std::string>& names, 
 
 // Plot with Debian's python3 + matplotlib; a missing plotter is a warning, the CSV stays.
 void plot(const std::string& kind, const fs::path& csv, const fs::path& png, const std::string& reference) {
-  std::string cmd =
-      "/usr/bin/env python3 '" + shipped_directory("SHIP_LRM_SCRIPTS_DIR", "scripts") + "/plot_flight.py' " + kind + " '" + csv.string() + "' '" + png.string() + "'";
+  std::string cmd = "/usr/bin/env python3 '" + shipped_directory("SHIP_LRM_SCRIPTS_DIR", "scripts") + "/plot_flight.py' " + kind + " '" +
+                    csv.string() + "' '" + png.string() + "'";
   if (!reference.empty()) cmd += " --reference '" + reference + "'";
   if (std::system(cmd.c_str()) != 0)
     std::cerr << "ship_lrm: warning: plotting failed (needs python3 with matplotlib); the CSV " << csv << " is complete\n";
@@ -145,7 +145,10 @@ std::function<int()> add_doublet_command(CLI::App& app) {
   cmd->add_option("--axis", o->axis, "control moved: lateral, longitudinal, collective or pedal")
       ->check(CLI::IsMember({"lateral", "longitudinal", "collective", "pedal"}))
       ->capture_default_str();
-  cmd->add_option("--speed", o->speed, "trimmed speed, m/s")->check(CLI::Range(0.0, 90.0))->capture_default_str();
+  auto* speed_opt = cmd->add_option("--speed", o->speed,
+                                    "trimmed speed, m/s (default: the thesis' flight-test speed for the axis: lateral 13.37, "
+                                    "longitudinal 12.86, collective 7.72, pedal 13.37)")
+                        ->check(CLI::Range(0.0, 90.0));
   cmd->add_option("--amplitude", o->amplitude, "% of control travel")->check(CLI::Range(0.1, 50.0))->capture_default_str();
   cmd->add_option("--start", o->start, "s of trimmed flight before the doublet")->check(CLI::Range(0.0, 60.0))->capture_default_str();
   cmd->add_option("--pulse", o->pulse, "s, length of each half of the doublet")->check(CLI::Range(0.01, 20.0))->capture_default_str();
@@ -157,8 +160,10 @@ std::function<int()> add_doublet_command(CLI::App& app) {
   cmd->add_option("--config", o->config, "helicopter parameter file (default: the shipped config/bo105.yaml)");
   cmd->add_flag("--overwrite", o->overwrite, "replace existing output files");
   cmd->add_flag("--no-plot", o->no_plot, "write the CSV only");
-  return [o, cmd]() -> int {
+  return [o, cmd, speed_opt]() -> int {
     if (!cmd->parsed()) return -1;
+    if (speed_opt->count() == 0)  // thesis 8.2.2 (fig. 8.8) and appendix VI (figs. X, XI)
+      o->speed = o->axis == "longitudinal" ? 12.86 : o->axis == "collective" ? 7.72 : 13.37;
     if (o->duration <= o->start) throw CLI::ValidationError("--duration", "must be longer than --start");
     const HelicopterParameters p = load_config(o->config);
     DoubletOptions d;

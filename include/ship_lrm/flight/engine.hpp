@@ -1,7 +1,8 @@
 // Engine and rotor speed. Two modes:
 //  * constant rotor speed: the engine always supplies the power needed (the thesis' flight model);
 //  * governed: a first-order engine (time constant tau) with a power limit, commanded by a
-//    proportional-integral rotor-speed governor with load feed-forward; the rotor and drive train
+//    proportional-integral rotor-speed governor (optionally with a share of the load fed forward,
+//    "load anticipation"); the rotor and drive train
 //    (polar inertia I_R) integrate  I_R dOmega/dt = (P_engine - P_tail) / Omega - Q_main,
 //    so the rotor speed droops when the demand outruns the engine or its limit (flight tests in the
 //    thesis 8.2.2 showed 5 +- 1 %).
@@ -17,6 +18,7 @@ struct EngineState {
   double rotor_speed = 0;  // rad/s
   double power = 0;        // W delivered by the engine
   double governor_integral = 0;
+  double trim_power = 0;  // W, the power at the last trim (the governor's datum)
 };
 
 class Engine {
@@ -34,7 +36,7 @@ class Engine {
 
  private:
   EngineMode mode_;
-  double omega_ref_, inertia_, max_power_, tau_, kp_, ki_;
+  double omega_ref_, inertia_, max_power_, tau_, kp_, ki_, anticipation_;
 };
 
 }  // namespace ship_lrm::flight

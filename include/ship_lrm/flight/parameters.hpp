@@ -54,6 +54,7 @@ struct SurfaceParameters {
 
 struct EngineParameters {
   double max_power = 0, time_constant = 0.3, governor_gain = 4, governor_integral = 2;
+  double load_anticipation = 0;  // 0..1: share of the load change fed forward to the engine
 };
 
 struct ControlParameters {
