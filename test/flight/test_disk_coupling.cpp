@@ -1,0 +1,73 @@
+// Rotor disk on the lattice (thesis 6.5): area fractions, force imposition and inflow extraction.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ship_lrm/rotor/disk_coupling.hpp"
+
+using namespace ship_lrm::rotor;
+
+TEST(DiskCoupling, ClippedAreaOfSquaresAndTriangles) {
+  const std::vector<std::array<double, 2>> tri = {{0, 0}, {2, 0}, {0, 2}};
+  EXPECT_NEAR(clipped_area(tri, 0, 1, 0, 1), 1.0, 1e-14);    // unit square fully inside
+  EXPECT_NEAR(clipped_area(tri, 1, 2, 0, 1), 0.5, 1e-14);    // half of it
+  EXPECT_NEAR(clipped_area(tri, 3, 4, 3, 4), 0.0, 1e-14);    // outside
+  EXPECT_NEAR(clipped_area(tri, -5, 5, -5, 5), 2.0, 1e-14);  // the whole triangle
+}
+
+class DiskSizes : public ::testing::TestWithParam<double> {};
+
+TEST_P(DiskSizes, FractionsAddUpToThePolygonArea) {
+  const double radius = GetParam();  // in cells: N = 32 and 64 per 4R give R = 7.75 and 15.75
+  const int n = static_cast<int>(2 * radius) + 6;
+  const double c = 0.5 * (n - 1);
+  const DiskCoupling disk(n, n, c, c, radius, 360);
+  const double polygon = 0.5 * 360 * radius * radius * std::sin(2 * M_PI / 360);
+  EXPECT_NEAR(disk.area(), polygon, 1e-9 * polygon);
+  EXPECT_NEAR(disk.area(), M_PI * radius * radius, 1e-4 * M_PI * radius * radius);
+  for (const auto& cell : disk.cells()) {
+    EXPECT_GT(cell.fraction, 0);
+    EXPECT_LE(cell.fraction, 1 + 1e-12);
+  }
+}
+
+TEST_P(DiskSizes, ImposedForceSumsToTheMeanAndExtractionInvertsTheHarmonics) {
+  const double radius = GetParam();
+  const int n = static_cast<int>(2 * radius) + 6;
+  const double c = 0.5 * (n - 1) + 0.3;  // off-centre: the grid is not symmetric about the disk
+  const DiskCoupling disk(n, n, c, c - 0.2, radius, 360);
+  RotorForceHarmonics h;
+  h.cos[0] = Vec3(100, -50, -24525);
+  h.cos[1] = Vec3(10, 20, 3000);
+  h.sin[1] = Vec3(-5, 0, 1500);
+  h.cos[4] = Vec3(0, 0, 800);
+  Vec3 total = Vec3::Zero();
+  for (const Vec3& f : disk.cell_forces(h)) total += f;
+  // the harmonics k >= 1 integrate to (nearly) zero over the disk; the mean comes through
+  EXPECT_LT((total - h.cos[0]).norm(), 2e-3 * h.cos[0].norm()) << total.transpose();
+  // a velocity field of exactly the extracted form is recovered exactly
+  const Vec3 mean(-20, 1, 11.6), sine(0.5, 0, 2.0), cosine(0, -0.3, 4.0);
+  const auto field = [&](int i, int j) {
+    const double dx = i - c, dy = j - (c - 0.2);
+    const double r = std::hypot(dx, dy) / radius, psi = std::atan2(dy, -dx);
+    return Vec3(mean + sine * (r * std::sin(psi)) + cosine * (r * std::cos(psi)));
+  };
+  const RotorInflow in = disk.extract(field);
+  EXPECT_LT((in.mean - mean).norm(), 1e-9);
+  EXPECT_LT((in.sine - sine).norm(), 1e-9);
+  EXPECT_LT((in.cosine - cosine).norm(), 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(Radii, DiskSizes, ::testing::Values(7.75, 15.75, 31.75));
+
+TEST(DiskCoupling, AzimuthConvention) {
+  // psi is measured from aft (-x) towards starboard (+y): the cell ahead of the hub is psi = 180 deg,
+  // the one to starboard 90 deg.
+  const DiskCoupling disk(41, 41, 20, 20, 10.0);
+  for (const auto& c : disk.cells()) {
+    if (c.i == 30 && c.j == 20) EXPECT_NEAR(std::abs(c.psi), M_PI, 1e-12);
+    if (c.i == 20 && c.j == 30) EXPECT_NEAR(c.psi, M_PI / 2, 1e-12);
+    if (c.i == 10 && c.j == 20) EXPECT_NEAR(c.psi, 0, 1e-12);
+  }
+  EXPECT_THROW(DiskCoupling(20, 20, 10, 10, 12.0), std::invalid_argument);  // does not fit
+}
