@@ -191,16 +191,4 @@ SHIP_LRM_HD float impedance_density(float K, float rho_prev, float un_prev) {
   return rho;
 }
 
-// Non-equilibrium bounce-back of the unknown populations (Zou & He 1997): for c_i.n < 0,
-// f_i = f_i^eq + (f_opp(i) - f_opp(i)^eq).
-SHIP_LRM_HD void noneq_bounce_back(float g[Q], int axis, int sgn, float rho, const float u[3]) {
-  SHIP_LRM_UNROLL
-  for (int i = 0; i < Q; ++i) {
-    if (d3q19::c(i, axis) * sgn < 0) {
-      const int o = d3q19::opp(i);
-      g[i] = equilibrium(i, rho, u) + g[o] - equilibrium(o, rho, u);
-    }
-  }
-}
-
 }  // namespace ship_lrm::lbm

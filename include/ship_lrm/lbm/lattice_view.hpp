@@ -374,6 +374,28 @@ SHIP_LRM_HD void velocity_gradient(const LatticeView& v, int x, int y, int z, st
   }
 }
 
+SHIP_LRM_HD constexpr bool open_face(FaceType f) {
+  return f == FaceType::VelocityInlet || f == FaceType::PressureOutlet || f == FaceType::ImpedanceOutlet;
+}
+
+// Is (x,y,z) on two or more open faces (an edge or corner where open boundaries meet)? If so, `diag`
+// is its inward diagonal neighbour (one step inwards along each such axis), if that is a fluid cell.
+SHIP_LRM_HD bool open_edge_neighbour(const LatticeView& v, int x, int y, int z, std::size_t& diag) {
+  int p[3] = {x, y, z};
+  int faces = 0;
+  for (int a = 0; a < 3; ++a) {
+    const bool lo = p[a] == 0 && open_face(static_cast<FaceType>(v.face[2 * a]));
+    const bool hi = p[a] == v.n[a] - 1 && open_face(static_cast<FaceType>(v.face[2 * a + 1]));
+    if (lo) p[a] += 1;
+    else if (hi) p[a] -= 1;
+    else continue;
+    ++faces;
+  }
+  if (faces < 2) return false;
+  diag = cell_index(v, p[0], p[1], p[2]);
+  return !is_wall(static_cast<CellType>(v.type[diag] & ~kGeneralBit)) && !is_open_boundary(static_cast<CellType>(v.type[diag] & ~kGeneralBit));
+}
+
 // Density and velocity of a fluid cell from its pre-collision populations (step parity kOdd;
 // checked gather: any cell, used off the hot path).
 template <bool kOdd>
@@ -402,7 +424,17 @@ SHIP_LRM_HD void update_support_macro(const LatticeView& v, std::size_t c, int b
   const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
   std::size_t in;
   const int axis = v.bnd_normal[b] >> 1, sgn = (v.bnd_normal[b] & 1) ? 1 : -1;
-  if (t == CellType::PressureOutlet && support_cell(v, x, y, z, axis, -sgn, in)) {
+  std::size_t diag;
+  if (open_edge_neighbour(v, x, y, z, diag)) {
+    // Edge or corner of two or three open faces: the known-population sums mix in links from
+    // across the other face, so take what is not prescribed from the inward diagonal neighbour
+    // (extrapolation, as in Guo, Zheng & Shi 2002, Chinese Physics 11, 366) and reconstruct the
+    // cell completely in pass 2.
+    const Macro mi = fluid_macro<kOdd>(v, diag);
+    if (t != CellType::PressureOutlet) m.rho = mi.rho;
+    if (t != CellType::VelocityInlet)
+      for (int a = 0; a < 3; ++a) m.u[a] = mi.u[a];
+  } else if (t == CellType::PressureOutlet && support_cell(v, x, y, z, axis, -sgn, in)) {
     // Neumann-type outflow (thesis 6.1.3): the velocity of the interior neighbour (zero normal
     // gradient) at the same time level, with the prescribed density. Taking u from the known
     // populations instead (Zou & He) is unstable next to no-slip walls.
@@ -422,20 +454,20 @@ SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
   gather_cell<kOdd>(v, c, x, y, z, v.bnd_mask[b], g);
   force_at(v, c, F);
   const Macro m = load_aux(v, c);
-  const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
-  if (t == CellType::ImpedanceOutlet) {
-    noneq_bounce_back(g, v.bnd_normal[b] >> 1, (v.bnd_normal[b] & 1) ? 1 : -1, m.rho, m.u);
-  } else {
-    float grad[3][3];
-    velocity_gradient(v, x, y, z, c, grad);
-    const float S[6] = {grad[0][0],
-                        grad[1][1],
-                        grad[2][2],
-                        0.5f * (grad[0][1] + grad[1][0]),
-                        0.5f * (grad[0][2] + grad[2][0]),
-                        0.5f * (grad[1][2] + grad[2][1])};
-    reconstruct_fd(g, m.rho, m.u, S, omega_from_nu(v.params.nu));
-  }
+  // Every open-boundary cell is rebuilt from its state (rho, u) and the velocity gradient (Latt et al.
+  // 2008). The impedance outlet's state comes from eq. 6.15; the thesis completes it with the
+  // non-equilibrium bounce-back of the unknown populations, which disturbed a uniform stream running
+  // along an impedance face (top and bottom of the LRM domain) by several per cent; the full
+  // reconstruction keeps it exact and still absorbs an acoustic pulse (tests in test_boundaries.cpp).
+  float grad[3][3];
+  velocity_gradient(v, x, y, z, c, grad);
+  const float S[6] = {grad[0][0],
+                      grad[1][1],
+                      grad[2][2],
+                      0.5f * (grad[0][1] + grad[1][0]),
+                      0.5f * (grad[0][2] + grad[2][0]),
+                      0.5f * (grad[1][2] + grad[2][1])};
+  reconstruct_fd(g, m.rho, m.u, S, omega_from_nu(v.params.nu));
   collide(g, F, v.params);
   scatter_cell<kOdd>(v, c, x, y, z, v.bnd_mask[b], g);
 }

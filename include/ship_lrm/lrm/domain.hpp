@@ -1,0 +1,78 @@
+// The LRM fluid domain (thesis 5.2, 6.4, 6.5): a lattice-Boltzmann cube of edge a * 4R with N nodes
+// per 4R, the rotor disk at its centre, axes parallel to the rotor's mr frame (x forward, y
+// starboard, z down). Faces (configurable): velocity front (+x), left (-y), right (+y), fed with the
+// air velocity relative to the domain; impedance back (-x), top (-z), bottom (+z). The rotor's
+// aerodynamic force (on the blades) is imposed with the opposite sign on the fluid in the disk's
+// cell layer; the inflow is read back as mean + linear harmonics (rotor/disk_coupling.hpp), in m/s
+// relative to the domain: the rotor-inflow interface of inflow_model.hpp.
+//
+// This first version is the isolated rotor in a uniform stream (thesis 8.1): no fuselage, ship or
+// ground walls and no domain rotation yet.
+#pragma once
+
+#include <array>
+#include <memory>
+
+#include "ship_lrm/lbm/solver.hpp"
+#include "ship_lrm/lbm/units.hpp"
+#include "ship_lrm/rotor/disk_coupling.hpp"
+#include "ship_lrm/rotor/inflow_model.hpp"
+
+namespace ship_lrm::lrm {
+
+using rotor::Vec3;
+
+struct LrmConfig {
+  int nodes = 64;                     // N: lattice nodes across 4R (thesis 6.4)
+  double reach = 1.25;                // a >= 1: domain edge / 4R
+  double radius = 4.92;               // m (thesis' LRM tables)
+  double density = 1.1934;            // kg/m^3 (thesis table 6.4)
+  double viscosity = 1.46072e-4;      // m^2/s (thesis table 6.4)
+  double reference_velocity = 30.0;   // m/s mapped to 0.3 c_s (thesis table 6.4)
+  double smagorinsky = 0.05;          // thesis 6.1 (LRM domain)
+  lbm::Backend backend = lbm::Backend::Auto;
+  // -x (back), +x (front), -y (left), +y (right), -z (top), +z (bottom)
+  std::array<lbm::FaceType, 6> faces = {lbm::FaceType::ImpedanceOutlet, lbm::FaceType::VelocityInlet, lbm::FaceType::VelocityInlet,
+                                        lbm::FaceType::VelocityInlet,   lbm::FaceType::ImpedanceOutlet, lbm::FaceType::ImpedanceOutlet};
+};
+
+class LrmDomain {
+ public:
+  // Throws lbm::ConfigError for a < 1, N < 16 or a set-up beyond the Mach limit.
+  explicit LrmDomain(const LrmConfig& cfg);
+
+  const LrmConfig& config() const { return cfg_; }
+  const lbm::UnitConverter& units() const { return units_; }
+  int cells_per_edge() const { return edge_; }
+  double time_step() const { return units_.dt(); }  // s, one LBM step
+  double time() const { return steps_ * units_.dt(); }
+  const rotor::DiskCoupling& disk() const { return disk_; }
+  lbm::Solver& solver() { return *solver_; }
+
+  // Air velocity relative to the domain at the velocity faces (m/s, mr axes); a uniform stream.
+  // Throws lbm::ConfigError when it exceeds the lattice Mach limit.
+  void set_stream(const Vec3& air_velocity);
+  // Restart the flow: every cell at rest density with the current stream's velocity (no rotor wake).
+  // An impulsive start from rest instead sends a compression wave through the domain that the
+  // non-reflecting outlets let out without restoring the density (no reference pressure).
+  void restart_flow();
+  // Aerodynamic force on the blades over azimuth (N, mr axes); the fluid gets the opposite.
+  void set_rotor_forces(const rotor::RotorForceHarmonics& h);
+  // Advance by whole LBM steps (at least one).
+  void step(long n = 1);
+  // Inflow over the disk (m/s, mr axes, relative to the domain).
+  rotor::RotorInflow inflow();
+
+ private:
+  LrmConfig cfg_;
+  lbm::UnitConverter units_;
+  int edge_;
+  double centre_;
+  rotor::DiskCoupling disk_;
+  int disk_layer_;
+  std::unique_ptr<lbm::Solver> solver_;
+  long steps_ = 0;
+  Vec3 stream_lattice_ = Vec3::Zero();
+};
+
+}  // namespace ship_lrm::lrm

@@ -1,0 +1,103 @@
+// The LRM fluid domain, isolated rotor (see domain.hpp).
+#include "ship_lrm/lrm/domain.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace ship_lrm::lrm {
+namespace {
+
+lbm::UnitReference unit_reference(const LrmConfig& c) {
+  if (!(c.reach >= 1.0)) throw lbm::ConfigError("LRM: the reach factor a must be >= 1 (domain edge a * 4R), got " + std::to_string(c.reach));
+  if (c.nodes < 16) throw lbm::ConfigError("LRM: N must be >= 16 nodes per 4R, got " + std::to_string(c.nodes));
+  if (!(c.radius > 0)) throw lbm::ConfigError("LRM: the rotor radius must be > 0");
+  lbm::UnitReference r;
+  r.length = 4.0 * c.radius;
+  r.nodes = c.nodes;
+  r.velocity = c.reference_velocity;
+  r.viscosity = c.viscosity;
+  r.density = c.density;
+  return r;
+}
+
+int edge_cells(const LrmConfig& c) { return static_cast<int>(std::lround(c.reach * (c.nodes - 1))) + 1; }
+
+lbm::Lattice make_lattice(const LrmConfig& c, const lbm::UnitConverter& u, int edge) {
+  lbm::LatticeConfig lc;
+  lc.nx = lc.ny = lc.nz = edge;
+  lc.collision.nu = static_cast<float>(u.lattice_viscosity());
+  lc.collision.smagorinsky = static_cast<float>(c.smagorinsky);
+  for (int f = 0; f < 6; ++f) lc.faces[f].type = c.faces[f];
+  lc.mach_guard = 0.9f;
+  return lbm::Lattice(lc);
+}
+
+}  // namespace
+
+LrmDomain::LrmDomain(const LrmConfig& cfg)
+    : cfg_(cfg),
+      units_(unit_reference(cfg)),
+      edge_(edge_cells(cfg)),
+      centre_(0.5 * (edge_ - 1)),
+      disk_(edge_, edge_, centre_, centre_, cfg.radius / units_.dx()),
+      disk_layer_(static_cast<int>(std::lround(centre_))) {
+  solver_ = lbm::make_solver(make_lattice(cfg, units_, edge_), cfg.backend);
+  solver_->initialize({}, {});
+}
+
+void LrmDomain::set_stream(const Vec3& air) {
+  const Vec3 u = air * (units_.dt() / units_.dx());
+  const double cs = 1.0 / std::sqrt(3.0);
+  if (u.norm() > lbm::kMaxSetupMach * cs)
+    throw lbm::ConfigError("LRM: a stream of " + std::to_string(air.norm()) + " m/s is beyond the lattice Mach limit " +
+                           std::to_string(lbm::kMaxSetupMach) + " at N = " + std::to_string(cfg_.nodes) +
+                           " (largest: " + std::to_string(units_.to_physical_velocity(lbm::kMaxSetupMach * cs)) + " m/s)");
+  const auto& lat = solver_->lattice();
+  const auto& cells = lat.boundary_cells();
+  std::vector<float> values(4 * cells.size(), 0.0f);
+  for (size_t k = 0; k < cells.size(); ++k) {
+    values[4 * k + 0] = static_cast<float>(u.x());
+    values[4 * k + 1] = static_cast<float>(u.y());
+    values[4 * k + 2] = static_cast<float>(u.z());
+  }
+  solver_->set_boundary_values(values);
+  stream_lattice_ = u;
+}
+
+void LrmDomain::restart_flow() {
+  const size_t n = solver_->lattice().cells();
+  std::vector<float> u(3 * n);
+  for (size_t k = 0; k < n; ++k)
+    for (int d = 0; d < 3; ++d) u[3 * k + d] = static_cast<float>(stream_lattice_[d]);
+  solver_->initialize(std::vector<float>(n, 1.0f), u);
+}
+
+void LrmDomain::set_rotor_forces(const rotor::RotorForceHarmonics& h) {
+  const auto forces = disk_.cell_forces(h);  // N per cell, on the blades
+  const double dx = units_.dx();
+  std::vector<float> field(3 * solver_->lattice().cells(), 0.0f);
+  const auto& lat = solver_->lattice();
+  for (size_t k = 0; k < forces.size(); ++k) {
+    const auto& c = disk_.cells()[k];
+    const size_t idx = lat.index(c.i, c.j, disk_layer_);
+    for (int d = 0; d < 3; ++d) field[3 * idx + d] = static_cast<float>(units_.to_lattice_force_density(-forces[k][d] / (dx * dx * dx)));
+  }
+  solver_->set_force_field(field);
+}
+
+void LrmDomain::step(long n) {
+  solver_->step(n);
+  steps_ += n;
+}
+
+rotor::RotorInflow LrmDomain::inflow() {
+  const lbm::Fields f = solver_->fields();
+  const auto& lat = solver_->lattice();
+  const double scale = units_.dx() / units_.dt();
+  return disk_.extract([&](int i, int j) {
+    const size_t idx = lat.index(i, j, disk_layer_);
+    return Vec3(f.u[3 * idx] * scale, f.u[3 * idx + 1] * scale, f.u[3 * idx + 2] * scale);
+  });
+}
+
+}  // namespace ship_lrm::lrm
