@@ -3,11 +3,14 @@
 
 usage: plot_flight.py trim TRIM.csv OUT.png [--reference MEASURED.csv]
        plot_flight.py doublet DOUBLET.csv OUT.png
+       plot_flight.py sweep_inflow INFLOW_SWEEP.csv OUT.png
 
 trim: power, the four controls and the attitudes over speed, laid out like thesis figs. 8.5-8.7.
 A reference CSV (e.g. digitised flight-test points) with any of the same column names is drawn as
 circles beside the model's lines.
 doublet: controls, rates, attitudes, rate of descent, rotor speed and power over time (fig. 8.8).
+sweep_inflow: LRM mean and cosine inflow over speed beside Pitt-Peters, both over the hover
+momentum-theory velocity (thesis figs. 8.1, 8.2).
 """
 import argparse
 import csv
@@ -92,9 +95,29 @@ def plot_doublet(data, out):
     fig.savefig(out, dpi=100)
 
 
+def plot_sweep_inflow(data, out):
+    v = data["speed_m_s"]
+    vh = data["hover_momentum_theory_m_s"][0]
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
+    label = f"LRM N = {int(data['N'][0])}, a = {data['reach'][0]:g}"
+    axes[0].plot(v, [x / vh for x in data["lrm_mean_m_s"]], "o-", label=label)
+    axes[0].plot(v, [x / vh for x in data["pitt_peters_mean_m_s"]], "-", color="k", label="Pitt-Peters (= Glauert here)")
+    axes[0].set_ylabel("mean inflow / v_h")
+    axes[1].plot(v, [x / vh for x in data["lrm_cosine_m_s"]], "o-", label=label)
+    axes[1].plot(v, [x / vh for x in data["pitt_peters_cosine_m_s"]], "-", color="k", label="Pitt-Peters")
+    axes[1].set_ylabel("cosine inflow / v_h")
+    for ax in axes:
+        ax.set_xlabel("speed [m/s]")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle(f"Isolated rotor, uniform thrust, zero incidence (cf. thesis figs. 8.1, 8.2); v_h = {vh:.2f} m/s")
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("kind", choices=["trim", "doublet"])
+    ap.add_argument("kind", choices=["trim", "doublet", "sweep_inflow"])
     ap.add_argument("csv")
     ap.add_argument("png")
     ap.add_argument("--reference")
@@ -102,8 +125,10 @@ def main():
     data = read(a.csv)
     if a.kind == "trim":
         plot_trim(data, a.png, read(a.reference) if a.reference else None)
-    else:
+    elif a.kind == "doublet":
         plot_doublet(data, a.png)
+    else:
+        plot_sweep_inflow(data, a.png)
 
 
 if __name__ == "__main__":

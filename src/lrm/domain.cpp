@@ -8,7 +8,8 @@ namespace ship_lrm::lrm {
 namespace {
 
 lbm::UnitReference unit_reference(const LrmConfig& c) {
-  if (!(c.reach >= 1.0)) throw lbm::ConfigError("LRM: the reach factor a must be >= 1 (domain edge a * 4R), got " + std::to_string(c.reach));
+  if (!(c.reach >= 1.0))
+    throw lbm::ConfigError("LRM: the reach factor a must be >= 1 (domain edge a * 4R), got " + std::to_string(c.reach));
   if (c.nodes < 16) throw lbm::ConfigError("LRM: N must be >= 16 nodes per 4R, got " + std::to_string(c.nodes));
   if (!(c.radius > 0)) throw lbm::ConfigError("LRM: the rotor radius must be > 0");
   lbm::UnitReference r;

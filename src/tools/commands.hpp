@@ -2,7 +2,10 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace ship_lrm::tools {
 
@@ -14,6 +17,15 @@ std::function<int()> add_validate_command(CLI::App& app);
 #ifdef SHIP_LRM_HAVE_FLIGHT
 std::function<int()> add_trim_command(CLI::App& app);
 std::function<int()> add_doublet_command(CLI::App& app);
+std::function<int()> add_sweep_command(CLI::App& app);
+
+// Shared by the sweep commands (cmd_flight.cpp):
+// "0:5:70" (start:step:stop) or "0,10,25" in 0..100 m/s; CLI::ValidationError otherwise.
+std::vector<double> parse_speeds(const std::string& text);
+// Creates dir; refuses to overwrite an existing file of `names` unless overwrite is set.
+void prepare_output(const std::filesystem::path& dir, const std::vector<std::string>& names, bool overwrite);
+// scripts/plot_flight.py <kind> csv png [--reference ref]; a failure is a warning, the CSV stays.
+void plot(const std::string& kind, const std::filesystem::path& csv, const std::filesystem::path& png, const std::string& reference);
 #endif
 
 }  // namespace ship_lrm::tools

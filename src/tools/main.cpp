@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
 #ifdef SHIP_LRM_HAVE_FLIGHT
   actions.push_back(ship_lrm::tools::add_trim_command(app));
   actions.push_back(ship_lrm::tools::add_doublet_command(app));
+  actions.push_back(ship_lrm::tools::add_sweep_command(app));
 #endif
   try {
     app.parse(argc, argv);

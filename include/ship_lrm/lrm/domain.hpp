@@ -23,16 +23,16 @@ namespace ship_lrm::lrm {
 using rotor::Vec3;
 
 struct LrmConfig {
-  int nodes = 64;                     // N: lattice nodes across 4R (thesis 6.4)
-  double reach = 1.25;                // a >= 1: domain edge / 4R
-  double radius = 4.92;               // m (thesis' LRM tables)
-  double density = 1.1934;            // kg/m^3 (thesis table 6.4)
-  double viscosity = 1.46072e-4;      // m^2/s (thesis table 6.4)
-  double reference_velocity = 30.0;   // m/s mapped to 0.3 c_s (thesis table 6.4)
-  double smagorinsky = 0.05;          // thesis 6.1 (LRM domain)
+  int nodes = 64;                    // N: lattice nodes across 4R (thesis 6.4)
+  double reach = 1.25;               // a >= 1: domain edge / 4R
+  double radius = 4.92;              // m (thesis' LRM tables)
+  double density = 1.1934;           // kg/m^3 (thesis table 6.4)
+  double viscosity = 1.46072e-4;     // m^2/s (thesis table 6.4)
+  double reference_velocity = 30.0;  // m/s mapped to 0.3 c_s (thesis table 6.4)
+  double smagorinsky = 0.05;         // thesis 6.1 (LRM domain)
   lbm::Backend backend = lbm::Backend::Auto;
   // -x (back), +x (front), -y (left), +y (right), -z (top), +z (bottom)
-  std::array<lbm::FaceType, 6> faces = {lbm::FaceType::ImpedanceOutlet, lbm::FaceType::VelocityInlet, lbm::FaceType::VelocityInlet,
+  std::array<lbm::FaceType, 6> faces = {lbm::FaceType::ImpedanceOutlet, lbm::FaceType::VelocityInlet,   lbm::FaceType::VelocityInlet,
                                         lbm::FaceType::VelocityInlet,   lbm::FaceType::ImpedanceOutlet, lbm::FaceType::ImpedanceOutlet};
 };
 
