@@ -15,4 +15,9 @@ Vec3 RotorForceHarmonics::at(double psi) const {
   return f;
 }
 
+void add_frame_rotation(RotorInflow& in, const Vec3& body_rate, double radius) {
+  in.cosine += radius * body_rate.cross(Vec3::UnitX());
+  in.sine -= radius * body_rate.cross(Vec3::UnitY());
+}
+
 }  // namespace ship_lrm::rotor

@@ -95,9 +95,8 @@ RotorInflow PittPetersInflow::inflow() const {
   in.mean = -s.hub_velocity + Vec3(0, 0, lambda_[0] * tip);
   in.sine = Vec3(0, 0, lambda_[1] * tip);
   in.cosine = Vec3(0, 0, lambda_[2] * tip);
-  // ... and the air's apparent motion in the rotating fuselage frame, -omega x p at p = r(-cos, sin, 0).
-  in.cosine += s.radius * s.body_rate.cross(Vec3::UnitX());
-  in.sine -= s.radius * s.body_rate.cross(Vec3::UnitY());
+  // ... and the air's apparent motion in the rotating fuselage frame.
+  add_frame_rotation(in, s.body_rate, s.radius);
   return in;
 }
 

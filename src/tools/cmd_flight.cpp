@@ -1,5 +1,6 @@
 // `ship_lrm trim` and `ship_lrm doublet`: Bo 105 flight-model sweeps, written as CSV (header row) and
 // plotted to PNG by scripts/plot_flight.py.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include "commands.hpp"
 #include "ship_lrm/flight/doublet.hpp"
 #include "ship_lrm/flight/trim.hpp"
+#include "ship_lrm/lrm/lrm_inflow.hpp"
 
 namespace ship_lrm::tools {
 namespace fs = std::filesystem;
@@ -27,13 +29,21 @@ HelicopterParameters load_config(const std::string& path) { return path.empty() 
 std::function<int()> add_trim_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("trim", "Trim the Bo 105 in steady level flight over a range of speeds (thesis figs. 8.5-8.7)");
   struct Opts {
-    std::string speeds = "0:5:70", inflow = "pitt_peters", out, config, reference;
+    std::string speeds = "0:5:70", inflow = "pitt_peters", out, config, reference, backend = "auto";
+    int nodes = 64;
+    double reach = 1.25, warm_up = 3.0;
     bool overwrite = false, no_plot = false;
   };
   auto o = std::make_shared<Opts>();
   cmd->add_option("--speeds", o->speeds, "speeds in m/s: start:step:stop or a comma list")->capture_default_str();
-  cmd->add_option("--inflow", o->inflow, "inflow model (pitt_peters; lrm arrives with the LRM domain)")
-      ->check(CLI::IsMember({"pitt_peters"}))
+  cmd->add_option("--inflow", o->inflow, "inflow model: pitt_peters, or lrm (the LRM fluid domain, thesis 8.2.1)")
+      ->check(CLI::IsMember({"pitt_peters", "lrm"}))
+      ->capture_default_str();
+  cmd->add_option("--N", o->nodes, "lrm: lattice nodes per 4R")->check(CLI::Range(16, 512))->capture_default_str();
+  cmd->add_option("--reach", o->reach, "lrm: domain edge / 4R (a >= 1)")->check(CLI::Range(1.0, 8.0))->capture_default_str();
+  cmd->add_option("--backend", o->backend, "lrm: cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
+  cmd->add_option("--warm-up", o->warm_up, "lrm: s simulated before the first trim evaluation")
+      ->check(CLI::Range(0.0, 600.0))
       ->capture_default_str();
   cmd->add_option("--out", o->out, "output directory (trim.csv, trim.png)")->required();
   cmd->add_option("--config", o->config, "helicopter parameter file (default: the shipped config/bo105.yaml)");
@@ -46,7 +56,19 @@ std::function<int()> add_trim_command(CLI::App& app) {
     const HelicopterParameters p = load_config(o->config);
     const fs::path dir(o->out);
     prepare_output(dir, {"trim.csv", "trim.png"}, o->overwrite);
-    Helicopter heli(p);
+    std::unique_ptr<rotor::InflowModel> inflow;
+    if (o->inflow == "lrm") {
+      lrm::LrmConfig c;
+      c.nodes = o->nodes;
+      c.reach = o->reach;
+      c.backend = lbm::parse_backend(o->backend);
+      c.radius = p.main_rotor.radius;
+      c.density = p.density;
+      // the stream must stay below the lattice Mach limit: map the fastest speed to 0.3 c_s if needed
+      c.reference_velocity = std::max(c.reference_velocity, *std::max_element(speeds.begin(), speeds.end()));
+      inflow = std::make_unique<lrm::LrmInflow>(c, o->warm_up);
+    }
+    Helicopter heli(p, std::move(inflow));
     std::ofstream csv(dir / "trim.csv");
     csv << "speed_m_s,converged,residual,iterations,total_power_kW,main_power_kW,tail_power_kW,collective_pct,longitudinal_pct,"
            "lateral_pct,pedal_pct,collective_deg,forward_cyclic_deg,right_cyclic_deg,tail_pitch_deg,pitch_deg,roll_deg,thrust_N,"

@@ -55,3 +55,29 @@ TEST(LrmDomain, BadInputIsRejectedBeforeAnyStep) {
   lrm::LrmDomain d(quick_config());
   EXPECT_THROW(d.set_stream(rotor::Vec3(-200, 0, 0)), lbm::ConfigError);  // beyond the lattice Mach limit
 }
+
+#include "ship_lrm/flight/trim.hpp"
+#include "ship_lrm/lrm/lrm_inflow.hpp"
+
+TEST(CoupledLrm, TrimAt30MetresPerSecondConvergesNearPittPetersPower) {
+  // Issue 4, acceptance 5, quick variant (N = 32, one speed; the sweep 10-50 m/s at N = 64 runs with
+  // `ship_lrm trim --inflow lrm`): the Bo 105 trimmed with the LRM domain as its inflow model.
+  const auto p = flight::load_default_bo105();
+  flight::TrimTarget t;
+  t.speed = 30;
+  flight::Helicopter pp(p);
+  const auto ref = flight::trim(pp, t);
+  ASSERT_TRUE(ref.converged) << ref.message;
+  auto c = quick_config();
+  c.radius = p.main_rotor.radius;
+  c.density = p.density;
+  flight::Helicopter heli(p, std::make_unique<lrm::LrmInflow>(c, 3.0));
+  flight::TrimOptions o;
+  o.initial_controls = ref.controls;
+  o.initial_attitude = flight::Vec3(ref.roll, ref.pitch, 0);
+  const auto r = flight::trim(heli, t, o);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_NEAR(r.total_power, ref.total_power, 0.10 * ref.total_power);
+  RecordProperty("lrm_power_kW", std::to_string(r.total_power / 1e3));
+  RecordProperty("pitt_peters_power_kW", std::to_string(ref.total_power / 1e3));
+}

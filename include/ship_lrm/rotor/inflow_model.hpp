@@ -12,6 +12,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 #include <string>
 
@@ -51,6 +52,10 @@ struct RotorDiskState {
   Vec3 aero_moment = Vec3::Zero();   // its moment about the hub, mr axes, N m
   RotorForceHarmonics harmonics;     // aerodynamic force over azimuth, thesis 6.5
 };
+
+// Adds the apparent air motion -omega x p of a frame rotating at `body_rate` (mr axes) over the disk,
+// p = r (-cos psi, sin psi, 0): exactly linear in (r/R) cos psi and (r/R) sin psi.
+void add_frame_rotation(RotorInflow& in, const Vec3& body_rate, double radius);
 
 class InflowModel {
  public:

@@ -1,0 +1,45 @@
+// The LRM domain as the flight model's inflow model (thesis 5.2, 6.5, fig. 5.5): every coupling step
+// the rotor's aerodynamic force harmonics go into the domain, the domain advances to the flight
+// model's time, and the inflow over the disk comes back. Drop-in replacement for Pitt-Peters
+// behind rotor::InflowModel.
+//
+// Frame: the domain is fixed to the rotor's mr frame and the stream at its velocity faces is the air
+// velocity relative to the hub (-hub_velocity). Not yet included: the domain's rotation (fictitious
+// forces) and walls; the inflow therefore lacks the -omega x r term a rotating grid would carry, and
+// Pitt-Peters' rotation term is added instead so the rotor sees the same kinematics.
+#pragma once
+
+#include <memory>
+
+#include "ship_lrm/lrm/domain.hpp"
+#include "ship_lrm/rotor/inflow_model.hpp"
+
+namespace ship_lrm::lrm {
+
+class LrmInflow final : public rotor::InflowModel {
+ public:
+  // warm_up: simulated seconds run at the first reset() so the wake develops.
+  explicit LrmInflow(const LrmConfig& cfg, double warm_up = 3.0);
+  std::string name() const override { return "lrm"; }
+  // First call: start the flow with this state's stream and loads and run the warm-up. Later calls
+  // keep the developed flow (its wake is the state to keep) and only take the new loads.
+  void reset(const rotor::RotorDiskState& state) override;
+  void advance(const rotor::RotorDiskState& state, double dt) override;
+  rotor::RotorInflow inflow() const override { return inflow_; }
+  bool needs_harmonics() const override { return true; }
+
+  LrmDomain& domain() { return domain_; }
+  long lbm_steps() { return domain_.solver().steps_done(); }
+
+ private:
+  void take(const rotor::RotorDiskState& s);
+  LrmDomain domain_;
+  double warm_up_;
+  bool started_ = false;
+  double time_ = 0;  // flight-model time reached by the inflow model
+  rotor::RotorInflow inflow_;
+  rotor::Vec3 body_rate_ = rotor::Vec3::Zero();
+  double radius_ = 0;
+};
+
+}  // namespace ship_lrm::lrm
