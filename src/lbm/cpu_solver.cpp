@@ -165,6 +165,23 @@ class CpuSolver final : public Solver {
     return cell_macro<kOdd>(view_, c);
   }
 
+  void do_velocities(bool next_odd, const std::vector<std::uint32_t>& cells, std::vector<float>& out) override {
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      const Macro m = next_odd ? macro_at<true>(cells[k]) : macro_at<false>(cells[k]);
+      for (int a = 0; a < 3; ++a) out[3 * k + a] = m.u[a];
+    }
+  }
+
+  void do_set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f) override {
+    const std::size_t n = lattice_.cells();
+    if (force_.empty()) {
+      force_.assign(3 * n, 0.0f);
+      sync_view();
+    }
+    for (std::size_t k = 0; k < cells.size(); ++k)
+      for (int a = 0; a < 3; ++a) force_[a * n + cells[k]] = f[3 * k + a];
+  }
+
   void do_fields(bool next_odd, Fields& out) override {
     const long n = static_cast<long>(lattice_.cells());
 #pragma omp parallel for schedule(static)

@@ -44,6 +44,7 @@ LrmDomain::LrmDomain(const LrmConfig& cfg)
       disk_layer_(static_cast<int>(std::lround(centre_))) {
   solver_ = lbm::make_solver(make_lattice(cfg, units_, edge_), cfg.backend);
   solver_->initialize({}, {});
+  for (const auto& c : disk_.cells()) disk_cells_.push_back(static_cast<std::uint32_t>(solver_->lattice().index(c.i, c.j, disk_layer_)));
 }
 
 void LrmDomain::set_stream(const Vec3& air) {
@@ -75,15 +76,11 @@ void LrmDomain::restart_flow() {
 
 void LrmDomain::set_rotor_forces(const rotor::RotorForceHarmonics& h) {
   const auto forces = disk_.cell_forces(h);  // N per cell, on the blades
-  const double dx = units_.dx();
-  std::vector<float> field(3 * solver_->lattice().cells(), 0.0f);
-  const auto& lat = solver_->lattice();
-  for (size_t k = 0; k < forces.size(); ++k) {
-    const auto& c = disk_.cells()[k];
-    const size_t idx = lat.index(c.i, c.j, disk_layer_);
-    for (int d = 0; d < 3; ++d) field[3 * idx + d] = static_cast<float>(units_.to_lattice_force_density(-forces[k][d] / (dx * dx * dx)));
-  }
-  solver_->set_force_field(field);
+  const double volume = std::pow(units_.dx(), 3);
+  std::vector<float> f(3 * forces.size());
+  for (size_t k = 0; k < forces.size(); ++k)
+    for (int d = 0; d < 3; ++d) f[3 * k + d] = static_cast<float>(units_.to_lattice_force_density(-forces[k][d] / volume));
+  solver_->set_cell_forces(disk_cells_, f);
 }
 
 void LrmDomain::step(long n) {
@@ -92,12 +89,13 @@ void LrmDomain::step(long n) {
 }
 
 rotor::RotorInflow LrmDomain::inflow() {
-  const lbm::Fields f = solver_->fields();
-  const auto& lat = solver_->lattice();
+  const std::vector<float> u = solver_->velocities(disk_cells_);
   const double scale = units_.dx() / units_.dt();
-  return disk_.extract([&](int i, int j) {
-    const size_t idx = lat.index(i, j, disk_layer_);
-    return Vec3(f.u[3 * idx] * scale, f.u[3 * idx + 1] * scale, f.u[3 * idx + 2] * scale);
+  size_t k = 0;  // extract() visits the cells in disk_.cells() order
+  return disk_.extract([&](int, int) {
+    const Vec3 v(u[3 * k] * scale, u[3 * k + 1] * scale, u[3 * k + 2] * scale);
+    ++k;
+    return v;
   });
 }
 

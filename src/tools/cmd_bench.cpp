@@ -6,6 +6,7 @@
 #include "ship_lrm/lbm/benchmark.hpp"
 #ifdef SHIP_LRM_HAVE_FLIGHT
 #include "ship_lrm/flight/flight_benchmark.hpp"
+#include "ship_lrm/lrm/lrm_benchmark.hpp"
 #endif
 
 namespace ship_lrm::tools {
@@ -42,14 +43,43 @@ std::function<int()> add_bench_command(CLI::App& app) {
   flight->add_option("--speed", fo->speed, "trimmed speed it flies from, m/s")->check(CLI::Range(0.0, 90.0))->capture_default_str();
   flight->add_option("--config", fo->config, "helicopter parameter file (default: the shipped config/bo105.yaml)");
   flight->add_flag("--json", fo->json, "print one JSON object");
+  auto* lrm_cmd = bench->add_subcommand("lrm", "Coupled step (Bo 105 flight model + LRM domain): t_clock / t_sim (thesis 8.3.1)");
+  struct LrmOpts {
+    std::string backend = "auto";
+    int nodes = 64;
+    double reach = 1.25, seconds = 2, speed = 25, warm_up = 0.5;
+    bool json = false;
+  };
+  auto lo = std::make_shared<LrmOpts>();
+  lrm_cmd->add_option("--backend", lo->backend, "cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
+  lrm_cmd->add_option("--N", lo->nodes, "lattice nodes per 4R")->check(CLI::Range(16, 512))->capture_default_str();
+  lrm_cmd->add_option("--reach", lo->reach, "domain edge / 4R")->check(CLI::Range(1.0, 8.0))->capture_default_str();
+  lrm_cmd->add_option("--seconds", lo->seconds, "simulated seconds timed")->check(CLI::Range(0.01, 600.0))->capture_default_str();
+  lrm_cmd->add_option("--speed", lo->speed, "trimmed speed, m/s")->check(CLI::Range(0.0, 40.0))->capture_default_str();
+  lrm_cmd->add_option("--warm-up", lo->warm_up, "simulated seconds before timing")->check(CLI::Range(0.0, 600.0))->capture_default_str();
+  lrm_cmd->add_flag("--json", lo->json, "print one JSON object");
 #endif
   return [o, lbm
 #ifdef SHIP_LRM_HAVE_FLIGHT
           ,
-          fo, flight
+          fo, flight, lo, lrm_cmd
 #endif
   ]() -> int {
 #ifdef SHIP_LRM_HAVE_FLIGHT
+    if (lrm_cmd->parsed()) {
+      lrm::LrmConfig c;
+      c.nodes = lo->nodes;
+      c.reach = lo->reach;
+      c.backend = lbm::parse_backend(lo->backend);
+      const auto r = lrm::run_lrm_benchmark(flight::load_default_bo105(), c, lo->seconds, lo->speed, lo->warm_up);
+      if (lo->json)
+        std::cout << r.to_json() << std::endl;
+      else
+        std::cout << std::fixed << std::setprecision(3) << "coupled LRM step, " << r.backend << ", N = " << r.nodes << ", a = " << r.reach
+                  << " (" << r.cells_per_edge << "^3 cells): t_clock / t_sim = " << r.clock_over_sim << ", " << std::setprecision(1)
+                  << r.mlups << " MLUPS\n";
+      return 0;
+    }
     if (flight->parsed()) {
       const auto p = fo->config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(fo->config);
       const auto r = flight::run_flight_benchmark(p, fo->seconds, fo->speed);

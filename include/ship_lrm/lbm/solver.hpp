@@ -50,6 +50,11 @@ class Solver {
   // Force density field (3 per cell, interleaved; empty clears it), added to the uniform force.
   virtual void set_force_field(const std::vector<float>& f) = 0;
   void set_uniform_force(const std::array<float, 3>& f);
+  // Velocity (3 per listed cell, interleaved) of some cells; cheaper than fields() on the CPU.
+  std::vector<float> velocities(const std::vector<std::uint32_t>& cells);
+  // Change the force density of some cells (3 values per listed cell), others keep theirs; the
+  // first call sets up a zero force field. Cheaper than set_force_field() on the CPU.
+  void set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f);
   // Values of the open-boundary cells, 4 per cell in lattice().boundary_cells() order:
   // velocity inlet (ux, uy, uz, -), pressure outlet (rho, -, -, -), impedance (ignored).
   virtual void set_boundary_values(const std::vector<float>& values) = 0;
@@ -67,6 +72,10 @@ class Solver {
   virtual void do_fields(bool next_odd, Fields& out) = 0;
   virtual void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) = 0;
   virtual void sync_view() = 0;  // after view_ parameters changed on the host
+  // Defaults go through fields() / set_force_field(); backends may do better.
+  virtual void do_velocities(bool next_odd, const std::vector<std::uint32_t>& cells, std::vector<float>& out);
+  virtual void do_set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f);
+  std::vector<float> force_mirror_;  // host copy for the default do_set_cell_forces
   // Index of the first cell whose speed is non-finite or above limit, or -1.
   virtual long long do_find_divergent(bool next_odd, float limit) = 0;
 

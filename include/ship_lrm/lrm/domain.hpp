@@ -70,6 +70,7 @@ class LrmDomain {
   double centre_;
   rotor::DiskCoupling disk_;
   int disk_layer_;
+  std::vector<std::uint32_t> disk_cells_;  // lattice indices of the disk cells, disk_.cells() order
   std::unique_ptr<lbm::Solver> solver_;
   long steps_ = 0;
   Vec3 stream_lattice_ = Vec3::Zero();

@@ -1,0 +1,59 @@
+// Coupled-step speed benchmark (see lrm_benchmark.hpp).
+#include "ship_lrm/lrm/lrm_benchmark.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "ship_lrm/flight/trim.hpp"
+#include "ship_lrm/lrm/lrm_inflow.hpp"
+
+namespace ship_lrm::lrm {
+
+std::string LrmBenchmarkResult::to_json() const {
+  std::ostringstream os;
+  os << "{\"benchmark\": \"lrm\", \"backend\": \"" << backend << "\", \"N\": " << nodes << ", \"reach\": " << reach
+     << ", \"cells_per_edge\": " << cells_per_edge << ", \"cells\": " << cells << ", \"flight_steps\": " << flight_steps
+     << ", \"lbm_steps\": " << lbm_steps << ", \"simulated_s\": " << simulated_seconds << ", \"wall_s\": " << wall_seconds
+     << ", \"clock_over_sim\": " << clock_over_sim << ", \"mlups\": " << mlups << "}";
+  return os.str();
+}
+
+LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg_in, double seconds, double speed,
+                                     double warm_up) {
+  if (!(seconds > 0)) throw lbm::ConfigError("lrm benchmark: needs seconds > 0");
+  LrmConfig cfg = cfg_in;
+  cfg.radius = p.main_rotor.radius;
+  cfg.density = p.density;
+  flight::Helicopter pp(p);
+  flight::TrimTarget t;
+  t.speed = speed;
+  const flight::TrimResult trim = flight::trim(pp, t);
+  if (!trim.converged) throw std::runtime_error(trim.message);
+  auto inflow = std::make_unique<LrmInflow>(cfg, warm_up);
+  LrmInflow* lrm = inflow.get();
+  flight::Helicopter heli(p, std::move(inflow), flight::EngineMode::ConstantSpeed);
+  heli.set_controls(trim.controls);
+  heli.set_body_held(true);
+  heli.reset(trim.body);  // starts the LRM flow and runs its warm-up (not timed)
+  LrmBenchmarkResult r;
+  r.backend = lrm->domain().solver().backend_name();
+  r.nodes = cfg.nodes;
+  r.reach = cfg.reach;
+  r.cells_per_edge = lrm->domain().cells_per_edge();
+  r.cells = static_cast<long>(lrm->domain().solver().lattice().cells());
+  const long lbm0 = lrm->lbm_steps();
+  const long steps = static_cast<long>(std::ceil(seconds / heli.time_step()));
+  const auto t0 = std::chrono::steady_clock::now();
+  for (long i = 0; i < steps; ++i) heli.step();
+  lrm->domain().solver().synchronize();
+  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.flight_steps = steps;
+  r.lbm_steps = lrm->lbm_steps() - lbm0;
+  r.simulated_seconds = steps * heli.time_step();
+  r.clock_over_sim = r.wall_seconds / r.simulated_seconds;
+  r.mlups = static_cast<double>(r.cells) * r.lbm_steps / r.wall_seconds / 1e6;
+  return r;
+}
+
+}  // namespace ship_lrm::lrm
