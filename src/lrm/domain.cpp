@@ -54,6 +54,7 @@ void LrmDomain::set_stream(const Vec3& air) {
     throw lbm::ConfigError("LRM: a stream of " + std::to_string(air.norm()) + " m/s is beyond the lattice Mach limit " +
                            std::to_string(lbm::kMaxSetupMach) + " at N = " + std::to_string(cfg_.nodes) +
                            " (largest: " + std::to_string(units_.to_physical_velocity(lbm::kMaxSetupMach * cs)) + " m/s)");
+  if (u == stream_lattice_ && stream_set_) return;  // unchanged (the coupled step calls this every step)
   const auto& lat = solver_->lattice();
   const auto& cells = lat.boundary_cells();
   std::vector<float> values(4 * cells.size(), 0.0f);
@@ -64,6 +65,7 @@ void LrmDomain::set_stream(const Vec3& air) {
   }
   solver_->set_boundary_values(values);
   stream_lattice_ = u;
+  stream_set_ = true;
 }
 
 void LrmDomain::restart_flow() {

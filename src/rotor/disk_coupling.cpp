@@ -75,6 +75,14 @@ DiskCoupling::DiskCoupling(int nx, int ny, double cx, double cy, double radius, 
       cells_.push_back(c);
       area_ += eps;
     }
+  for (const DiskCell& c : cells_) {
+    std::array<double, 2 * kHarmonicOrder> t{};
+    for (int k = 1; k <= kHarmonicOrder; ++k) {
+      t[k - 1] = std::cos(k * c.psi);
+      t[kHarmonicOrder + k - 1] = std::sin(k * c.psi);
+    }
+    trig_.push_back(t);
+  }
   Eigen::Matrix3d g = Eigen::Matrix3d::Zero();
   for (const DiskCell& c : cells_) {
     const Eigen::Vector3d basis(1.0, c.r_over_R * std::sin(c.psi), c.r_over_R * std::cos(c.psi));
@@ -86,8 +94,13 @@ DiskCoupling::DiskCoupling(int nx, int ny, double cx, double cy, double radius, 
 }
 
 std::vector<Vec3> DiskCoupling::cell_forces(const RotorForceHarmonics& h) const {
+  // F(psi) of thesis 6.5 with the cells' cos(k psi), sin(k psi) tabulated (this runs every step)
   std::vector<Vec3> f(cells_.size());
-  for (size_t k = 0; k < cells_.size(); ++k) f[k] = h.at(cells_[k].psi) * (cells_[k].fraction / area_);
+  for (size_t c = 0; c < cells_.size(); ++c) {
+    Vec3 v = h.cos[0];
+    for (int k = 1; k <= kHarmonicOrder; ++k) v += h.cos[k] * trig_[c][k - 1] + h.sin[k] * trig_[c][kHarmonicOrder + k - 1];
+    f[c] = v * (cells_[c].fraction / area_);
+  }
   return f;
 }
 

@@ -48,14 +48,23 @@ void AzimuthForceRecord::fill(const std::vector<Vec3>& per_blade_force) {
 }
 
 RotorForceHarmonics AzimuthForceRecord::harmonics() const {
+  // cos(k psi_j), sin(k psi_j) of the 72 samples, tabulated once (the coupled step asks every step)
+  static const auto table = [] {
+    std::array<std::array<double, 2 * (kHarmonicOrder + 1)>, kAzimuthSamples> t{};
+    for (int j = 0; j < kAzimuthSamples; ++j)
+      for (int k = 0; k <= kHarmonicOrder; ++k) {
+        t[j][k] = std::cos(k * j * kBinWidth);
+        t[j][kHarmonicOrder + 1 + k] = std::sin(k * j * kBinWidth);
+      }
+    return t;
+  }();
   RotorForceHarmonics h;
   for (const auto& s : samples_)
     for (int j = 0; j < kAzimuthSamples; ++j) {
-      const double psi = j * kBinWidth;
       h.cos[0] += s[j];
       for (int k = 1; k <= kHarmonicOrder; ++k) {
-        h.cos[k] += s[j] * std::cos(k * psi);
-        h.sin[k] += s[j] * std::sin(k * psi);
+        h.cos[k] += s[j] * table[j][k];
+        h.sin[k] += s[j] * table[j][kHarmonicOrder + 1 + k];
       }
     }
   h.cos[0] /= kAzimuthSamples;

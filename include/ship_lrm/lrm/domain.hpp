@@ -74,6 +74,7 @@ class LrmDomain {
   std::unique_ptr<lbm::Solver> solver_;
   long steps_ = 0;
   Vec3 stream_lattice_ = Vec3::Zero();
+  bool stream_set_ = false;
 };
 
 }  // namespace ship_lrm::lrm

@@ -71,6 +71,7 @@ class DiskCoupling {
 
  private:
   std::vector<DiskCell> cells_;
+  std::vector<std::array<double, 2 * kHarmonicOrder>> trig_;  // cos(k psi), sin(k psi), k = 1..9, per cell
   double radius_, area_ = 0;
   double g_inv_[3][3] = {};  // inverse of the eps-weighted normal matrix of (1, (r/R) sin, (r/R) cos)
 };
