@@ -95,6 +95,16 @@ MainRotorInputs Helicopter::rotor_inputs() const {
   return in;
 }
 
+Wrench Helicopter::hub_loads_on_body(const MainRotorLoads& loads, double shaft_torque) const {
+  // about the shaft the fuselage feels the drive torque's reaction, not the blades' aerodynamic torque
+  Vec3 m_mr = loads.moment;
+  m_mr.z() = (p_.main_rotor.clockwise ? -1.0 : 1.0) * shaft_torque;
+  Wrench w;
+  w.force = mr_to_body_ * loads.force;
+  w.moment = mr_to_body_ * m_mr + p_.main_rotor.hub_position.cross(w.force);
+  return w;
+}
+
 Wrench Helicopter::other_loads(const RigidBodyState& s, TailRotorResult* tail, AirframeLoads* airframe) {
   Wrench w;
   w.force = s.attitude.conjugate() * Vec3(0, 0, p_.mass.mass * p_.mass.gravity);
@@ -141,10 +151,7 @@ void Helicopter::reset(const RigidBodyState& body) {
     d = disk_state();
     inflow_->reset(d);
     out_.inflow = inflow_->inflow();
-    Vec3 m_mr = out_.rotor.moment;
-    m_mr.z() = (p_.main_rotor.clockwise ? -1.0 : 1.0) * out_.rotor.aero_torque;
-    out_.rotor_body.force = mr_to_body_ * out_.rotor.force;
-    out_.rotor_body.moment = mr_to_body_ * m_mr + p_.main_rotor.hub_position.cross(out_.rotor_body.force);
+    out_.rotor_body = hub_loads_on_body(out_.rotor, out_.rotor.aero_torque);
     Wrench w = other_loads(body_, &t, &out_.airframe);
     w += out_.rotor_body;
     const RigidBodyDerivative start = rigid_.derivative(body_, w);
@@ -218,11 +225,7 @@ void Helicopter::step() {
                                   ? loads.aero_torque
                                   : (engine_state_.power - tail_power) / std::max(engine_state_.rotor_speed, 1e-3);
   shaft_torque_ = shaft_torque;
-  Vec3 m_mr = loads.moment;
-  m_mr.z() = (p_.main_rotor.clockwise ? -1.0 : 1.0) * shaft_torque;
-  Wrench rotor_body;
-  rotor_body.force = mr_to_body_ * loads.force;
-  rotor_body.moment = mr_to_body_ * m_mr + p_.main_rotor.hub_position.cross(rotor_body.force);
+  const Wrench rotor_body = hub_loads_on_body(loads, shaft_torque);
   out_.rotor_body = rotor_body;
   // 4. fuselage
   const auto total = [&](const RigidBodyState& s) {

@@ -84,6 +84,8 @@ class Helicopter {
 
  private:
   Wrench other_loads(const RigidBodyState& s, TailRotorResult* tail, AirframeLoads* airframe);
+  // Main-rotor hub loads (mr axes, about the hub) as a body wrench about the cg.
+  Wrench hub_loads_on_body(const MainRotorLoads& loads, double shaft_torque) const;
   MainRotorInputs rotor_inputs() const;
   Vec3 air_velocity_body(const RigidBodyState& s) const { return s.velocity - s.attitude.conjugate() * wind_; }
 
