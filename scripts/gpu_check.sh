@@ -11,6 +11,7 @@ out="${OUT:-$root/build/gpu/results}"
 mkdir -p "$out"
 extra=()
 [ -d .carry/include/CLI ] && extra+=(-DSHIP_LRM_EXTRA_INCLUDE="$root/.carry/include")
+[ -f .carry/lib/libyaml-cpp.a ] && extra+=(-DSHIP_LRM_EXTRA_LIB="$root/.carry/lib")
 [ -f .carry/googletest/CMakeLists.txt ] && extra+=(-DSHIP_LRM_GTEST_SOURCE="$root/.carry/googletest")
 {
   nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.max.sm,clocks.max.mem --format=csv || true
@@ -23,6 +24,9 @@ export OMP_NUM_THREADS="${OMP_NUM_THREADS:-$(nproc)}"
 set +e
 build/gpu/bin/test_lbm --gtest_filter="${TEST_FILTER:-*-BluffBody.*}" 2>&1 | tee "$out/tests.log" | grep -E "OK|FAILED|SKIPPED|PASSED|max \|du\||reflected"
 test_rc=${PIPESTATUS[0]}
+for t in test_flight test_lrm; do  # built when Eigen and yaml-cpp were found or carried
+  [ -x "build/gpu/bin/$t" ] && { "build/gpu/bin/$t" 2>&1 | tee "$out/$t.log" | grep -E "FAILED|PASSED" || test_rc=1; }
+done
 set -e
 bench=build/gpu/bin/ship_lrm
 {
@@ -31,6 +35,8 @@ bench=build/gpu/bin/ship_lrm
   $bench bench lbm --backend cuda --size 80 --smagorinsky 0.05 --json
   $bench bench lbm --backend cuda --size 128 --json
   $bench bench lbm --backend cpu --size 128 --json
+  $bench bench lrm --backend cuda --N 64 --reach 1.25 --seconds 5 --json || true   # issue 4 target: <= 0.05
+  $bench bench lrm --backend cuda --N 128 --reach 1.25 --seconds 2 --json || true
 } | tee "$out/bench.jsonl"
 echo "tests exit code: $test_rc"
 exit "$test_rc"
