@@ -155,8 +155,8 @@ MainRotorLoads MainRotor::evaluate(const MainRotorInputs& in) const {
   const Vec3 w = axial_to_c(in.body_rate, clockwise_), wdot = axial_to_c(in.body_angular_acceleration, clockwise_);
   const Vec3 ahub = polar_to_c(in.hub_specific_force, clockwise_);
   const double right = clockwise_ ? -in.pitch.right : in.pitch.right;
-  MainRotorLoads l;
   Vec3 f = Vec3::Zero(), m = Vec3::Zero(), fa = Vec3::Zero(), ma = Vec3::Zero();
+  double pitch_moment = 0;
   for (int i = 0; i < nblades_; ++i) {
     const double psi = azimuth_ + 2.0 * M_PI * i / nblades_;
     const BladeResult r = blade(in, w, wdot, ahub, psi, blades_[i], in.pitch.collective, in.pitch.forward, right);
@@ -164,14 +164,9 @@ MainRotorLoads MainRotor::evaluate(const MainRotorInputs& in) const {
     m += r.moment;
     fa += r.aero_force;
     ma += r.aero_moment;
-    l.blade_pitch_moment += r.pitch_moment;
+    pitch_moment += r.pitch_moment;
   }
-  l.aero_torque = ma.z();
-  l.force = polar_to_c(f, clockwise_);
-  l.moment = axial_to_c(m, clockwise_);
-  l.aero_force = polar_to_c(fa, clockwise_);
-  l.aero_moment = axial_to_c(ma, clockwise_);
-  return l;
+  return to_mr(f, m, fa, ma, pitch_moment, 1.0);
 }
 
 MainRotorLoads MainRotor::step(const MainRotorInputs& in, double dt, int substeps, const RotorCoupling* coupling) {
@@ -232,14 +227,17 @@ MainRotorLoads MainRotor::step(const MainRotorInputs& in, double dt, int substep
     }
     azimuth_ = std::remainder(azimuth_ + h * in.rotor_speed, 2.0 * M_PI);
   }
-  const double inv = 1.0 / substeps;
+  return to_mr(f, m, fa, ma, pitch_moment, 1.0 / substeps);
+}
+
+MainRotorLoads MainRotor::to_mr(const Vec3& f, const Vec3& m, const Vec3& fa, const Vec3& ma, double pitch_moment, double scale) const {
   MainRotorLoads l;
-  l.aero_torque = ma.z() * inv;
-  l.force = polar_to_c(f * inv, clockwise_);
-  l.moment = axial_to_c(m * inv, clockwise_);
-  l.aero_force = polar_to_c(fa * inv, clockwise_);
-  l.aero_moment = axial_to_c(ma * inv, clockwise_);
-  l.blade_pitch_moment = pitch_moment * inv;
+  l.aero_torque = ma.z() * scale;
+  l.force = polar_to_c(f * scale, clockwise_);
+  l.moment = axial_to_c(m * scale, clockwise_);
+  l.aero_force = polar_to_c(fa * scale, clockwise_);
+  l.aero_moment = axial_to_c(ma * scale, clockwise_);
+  l.blade_pitch_moment = pitch_moment * scale;
   return l;
 }
 

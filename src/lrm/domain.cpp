@@ -1,6 +1,7 @@
 // The LRM fluid domain, isolated rotor (see domain.hpp).
 #include "ship_lrm/lrm/domain.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -34,6 +35,11 @@ lbm::Lattice make_lattice(const LrmConfig& c, const lbm::UnitConverter& u, int e
 }
 
 }  // namespace
+
+LrmConfig config_for_stream(LrmConfig cfg, double fastest_stream) {
+  cfg.reference_velocity = std::max(cfg.reference_velocity, std::abs(fastest_stream));
+  return cfg;
+}
 
 LrmDomain::LrmDomain(const LrmConfig& cfg)
     : cfg_(cfg),
@@ -93,12 +99,7 @@ void LrmDomain::step(long n) {
 rotor::RotorInflow LrmDomain::inflow() {
   const std::vector<float> u = solver_->velocities(disk_cells_);
   const double scale = units_.dx() / units_.dt();
-  size_t k = 0;  // extract() visits the cells in disk_.cells() order
-  return disk_.extract([&](int, int) {
-    const Vec3 v(u[3 * k] * scale, u[3 * k + 1] * scale, u[3 * k + 2] * scale);
-    ++k;
-    return v;
-  });
+  return disk_.extract([&](size_t k) { return Vec3(u[3 * k] * scale, u[3 * k + 1] * scale, u[3 * k + 2] * scale); });
 }
 
 }  // namespace ship_lrm::lrm

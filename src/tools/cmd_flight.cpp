@@ -64,9 +64,7 @@ std::function<int()> add_trim_command(CLI::App& app) {
       c.backend = lbm::parse_backend(o->backend);
       c.radius = p.main_rotor.radius;
       c.density = p.density;
-      // the stream must stay below the lattice Mach limit: map the fastest speed to 0.3 c_s if needed
-      c.reference_velocity = std::max(c.reference_velocity, *std::max_element(speeds.begin(), speeds.end()));
-      inflow = std::make_unique<lrm::LrmInflow>(c, o->warm_up);
+      inflow = std::make_unique<lrm::LrmInflow>(lrm::config_for_stream(c, *std::max_element(speeds.begin(), speeds.end())), o->warm_up);
     }
     Helicopter heli(p, std::move(inflow));
     std::ofstream csv(dir / "trim.csv");

@@ -44,13 +44,7 @@ std::function<int()> add_sweep_command(CLI::App& app) {
     cfg.backend = lbm::parse_backend(o->backend);
     const fs::path dir(o->out);
     prepare_output(dir, {"inflow_sweep.csv", "inflow_sweep.png"}, o->overwrite);
-    // The lattice reference velocity (0.3 c_s) stands for 30 m/s (thesis table 6.4) or for the stream
-    // speed when that is higher, so a fast stream stays at lattice Mach 0.3 (the time step shrinks).
-    const auto case_config = [&](double v) {
-      lrm::LrmConfig c = cfg;
-      c.reference_velocity = std::max(cfg.reference_velocity, v);
-      return c;
-    };
+    const auto case_config = [&](double v) { return lrm::config_for_stream(cfg, v); };
     for (double v : speeds) {  // check every set-up before any long run
       lrm::LrmDomain probe(case_config(v));
       probe.set_stream(rotor::Vec3(-v, 0, 0));

@@ -47,8 +47,8 @@ TEST_P(DiskSizes, ImposedForceSumsToTheMeanAndExtractionInvertsTheHarmonics) {
   EXPECT_LT((total - h.cos[0]).norm(), 2e-3 * h.cos[0].norm()) << total.transpose();
   // a velocity field of exactly the extracted form is recovered exactly
   const Vec3 mean(-20, 1, 11.6), sine(0.5, 0, 2.0), cosine(0, -0.3, 4.0);
-  const auto field = [&](int i, int j) {
-    const double dx = i - c, dy = j - (c - 0.2);
+  const auto field = [&](size_t k) {
+    const double dx = disk.cells()[k].i - c, dy = disk.cells()[k].j - (c - 0.2);
     const double r = std::hypot(dx, dy) / radius, psi = std::atan2(dy, -dx);
     return Vec3(mean + sine * (r * std::sin(psi)) + cosine * (r * std::cos(psi)));
   };

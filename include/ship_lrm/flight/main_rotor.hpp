@@ -121,6 +121,9 @@ class MainRotor {
   BladeResult blade(const MainRotorInputs& in, const Vec3& w, const Vec3& wdot, const Vec3& ahub, double psi, const BladeState& b,
                     double theta0, double fwd, double right) const;
 
+  // Sums over the blades (computation frame) times `scale`, as loads in mr axes.
+  MainRotorLoads to_mr(const Vec3& f, const Vec3& m, const Vec3& fa, const Vec3& ma, double pitch_moment, double scale) const;
+
   bool clockwise_;
   int nblades_;
   double radius_, chord_, twist_, twist_ref_, hinge_;

@@ -36,6 +36,10 @@ struct LrmConfig {
                                         lbm::FaceType::VelocityInlet,   lbm::FaceType::ImpedanceOutlet, lbm::FaceType::ImpedanceOutlet};
 };
 
+// cfg with the lattice reference velocity (0.3 c_s) standing for the fastest stream when that exceeds
+// cfg.reference_velocity (thesis: 30 m/s), so the lattice Mach number stays 0.3; the time step shrinks.
+LrmConfig config_for_stream(LrmConfig cfg, double fastest_stream);
+
 class LrmDomain {
  public:
   // Throws lbm::ConfigError for a < 1, N < 16 or a set-up beyond the Mach limit.

@@ -50,15 +50,16 @@ class DiskCoupling {
   // Vec3 per cells() entry.
   std::vector<Vec3> cell_forces(const RotorForceHarmonics& h) const;
 
-  // Mean and linear harmonics of a velocity field; velocity(i, j) returns the velocity of cell (i, j).
-  template <class VelocityAt>
-  RotorInflow extract(VelocityAt&& velocity) const {
+  // Mean and linear harmonics of a velocity field; velocity(k) returns the velocity of cells()[k].
+  template <class VelocityOfCell>
+  RotorInflow extract(VelocityOfCell&& velocity) const {
     Vec3 b0 = Vec3::Zero(), bs = Vec3::Zero(), bc = Vec3::Zero();
-    for (const DiskCell& c : cells_) {
-      const Vec3 u = velocity(c.i, c.j);
+    for (size_t k = 0; k < cells_.size(); ++k) {
+      const DiskCell& c = cells_[k];
+      const Vec3 u = velocity(k);
       b0 += c.fraction * u;
-      bs += (c.fraction * c.r_over_R * std::sin(c.psi)) * u;
-      bc += (c.fraction * c.r_over_R * std::cos(c.psi)) * u;
+      bs += (c.fraction * c.r_over_R * trig_[k][kHarmonicOrder]) * u;  // sin psi
+      bc += (c.fraction * c.r_over_R * trig_[k][0]) * u;               // cos psi
     }
     // weighted least squares for (mean, sine, cosine); on a disk centred in the grid the normal
     // matrix is diagonal and the mean is sum eps u / sum eps, as in the thesis
