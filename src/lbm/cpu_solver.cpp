@@ -62,10 +62,7 @@ class CpuSolver final : public Solver {
     sync_view();
   }
 
-  void set_boundary_values(const std::vector<float>& values) override {
-    if (values.size() != bnd_value_.size()) throw ConfigError("set_boundary_values: expected 4 values per open-boundary cell");
-    for (float v : values)
-      if (!std::isfinite(v)) throw ConfigError("set_boundary_values: value is not finite");
+  void do_set_boundary_values(const std::vector<float>& values) override {
     bnd_value_ = values;
     sync_view();
   }
@@ -146,15 +143,22 @@ class CpuSolver final : public Solver {
     }
   }
 
+  template <bool kOdd, bool kSmagorinsky>
+  void run_step_forced() {
+    switch (force_mode(view_)) {
+      case kNoForce:
+        return run_step<kOdd, kSmagorinsky, kNoForce>();
+      case kUniformForce:
+        return run_step<kOdd, kSmagorinsky, kUniformForce>();
+      case kForceField:
+        return run_step<kOdd, kSmagorinsky, kForceField>();
+      default:
+        return run_step<kOdd, kSmagorinsky, kFrameForce>();
+    }
+  }
   template <bool kOdd>
   void run_step_dispatch() {
-    const int force = force_mode(view_);
-    if (view_.params.smagorinsky > 0.0f)
-      force == kNoForce ? run_step<kOdd, true, kNoForce>()
-                        : (force == kUniformForce ? run_step<kOdd, true, kUniformForce>() : run_step<kOdd, true, kForceField>());
-    else
-      force == kNoForce ? run_step<kOdd, false, kNoForce>()
-                        : (force == kUniformForce ? run_step<kOdd, false, kUniformForce>() : run_step<kOdd, false, kForceField>());
+    view_.params.smagorinsky > 0.0f ? run_step_forced<kOdd, true>() : run_step_forced<kOdd, false>();
   }
   void do_step(bool odd) override { odd ? run_step_dispatch<true>() : run_step_dispatch<false>(); }
 

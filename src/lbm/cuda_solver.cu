@@ -188,12 +188,7 @@ class CudaSolver final : public Solver {
     sync_view();
   }
 
-  void set_boundary_values(const std::vector<float>& values) override {
-    if (values.size() != bnd_value_.size()) throw ConfigError("set_boundary_values: expected 4 values per open-boundary cell");
-    for (float v : values)
-      if (!std::isfinite(v)) throw ConfigError("set_boundary_values: value is not finite");
-    bnd_value_.upload(values);
-  }
+  void do_set_boundary_values(const std::vector<float>& values) override { bnd_value_.upload(values); }
 
   std::vector<float> populations() override {
     std::vector<pop_t> h;
@@ -206,6 +201,7 @@ class CudaSolver final : public Solver {
   }
 
  protected:
+  void sync_walls() override { walls_.upload(lattice_.wall_motions()); }
   void sync_view() override {
     view_.g = g_.data();
     view_.type = type_.data();
@@ -229,21 +225,32 @@ class CudaSolver final : public Solver {
     check(cudaDeviceSynchronize(), "initialize");
   }
 
+  template <bool kOdd, bool kSmagorinsky>
+  void launch_fluid_forced(unsigned nb) {
+    switch (force_mode(view_)) {
+      case kNoForce:
+        fluid_kernel<kOdd, kSmagorinsky, kNoForce><<<nb, kBlock>>>(view_, link_mask_.data());
+        break;
+      case kUniformForce:
+        fluid_kernel<kOdd, kSmagorinsky, kUniformForce><<<nb, kBlock>>>(view_, link_mask_.data());
+        break;
+      case kForceField:
+        fluid_kernel<kOdd, kSmagorinsky, kForceField><<<nb, kBlock>>>(view_, link_mask_.data());
+        break;
+      default:
+        fluid_kernel<kOdd, kSmagorinsky, kFrameForce><<<nb, kBlock>>>(view_, link_mask_.data());
+    }
+  }
+  template <bool kOdd>
+  void launch_fluid(unsigned nb) {
+    view_.params.smagorinsky > 0.0f ? launch_fluid_forced<kOdd, true>(nb) : launch_fluid_forced<kOdd, false>(nb);
+  }
+
   template <bool kOdd>
   void run_step() {
     const int ns = static_cast<int>(support_.size());
     if (ns) support_kernel<kOdd><<<blocks(ns), kBlock>>>(view_, support_.data(), support_b_.data(), support_m_.data(), ns);
-    const int force = force_mode(view_);
-    const unsigned nb = blocks(view_.ncells);
-    if (view_.params.smagorinsky > 0.0f) {
-      if (force == kNoForce) fluid_kernel<kOdd, true, kNoForce><<<nb, kBlock>>>(view_, link_mask_.data());
-      if (force == kUniformForce) fluid_kernel<kOdd, true, kUniformForce><<<nb, kBlock>>>(view_, link_mask_.data());
-      if (force == kForceField) fluid_kernel<kOdd, true, kForceField><<<nb, kBlock>>>(view_, link_mask_.data());
-    } else {
-      if (force == kNoForce) fluid_kernel<kOdd, false, kNoForce><<<nb, kBlock>>>(view_, link_mask_.data());
-      if (force == kUniformForce) fluid_kernel<kOdd, false, kUniformForce><<<nb, kBlock>>>(view_, link_mask_.data());
-      if (force == kForceField) fluid_kernel<kOdd, false, kForceField><<<nb, kBlock>>>(view_, link_mask_.data());
-    }
+    launch_fluid<kOdd>(blocks(view_.ncells));
     if (view_.nbnd) boundary_kernel<kOdd><<<blocks(view_.nbnd), kBlock>>>(view_);
   }
   void do_step(bool odd) override {

@@ -230,6 +230,14 @@ int Lattice::add_wall_motion(const WallMotion& m) {
   return static_cast<int>(walls_.size()) - 1;
 }
 
+void Lattice::set_wall_motion(int wall, const WallMotion& m) {
+  if (wall < 0 || wall >= static_cast<int>(walls_.size())) throw ConfigError("set_wall_motion: unknown wall index " + std::to_string(wall));
+  check_velocity({m.v[0], m.v[1], m.v[2]}, "wall motion");
+  for (int a = 0; a < 3; ++a)
+    if (!std::isfinite(m.omega[a]) || !std::isfinite(m.centre[a])) throw ConfigError("set_wall_motion: a value is not finite");
+  walls_[wall] = m;
+}
+
 void Lattice::set_moving_wall(int x, int y, int z, int wall) {
   check_cell(x, y, z, "set_moving_wall");
   if (wall < 0 || wall >= static_cast<int>(walls_.size()))

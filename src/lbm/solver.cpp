@@ -37,9 +37,40 @@ Solver::Solver(Lattice lattice) : lattice_(std::move(lattice)) {
   for (int f = 0; f < 6; ++f) {
     view_.face[f] = static_cast<std::uint8_t>(cfg.faces[f].type);
     for (int a = 0; a < 3; ++a) view_.face_velocity[f][a] = cfg.faces[f].velocity[a];
+    view_.face_inflow_reference[f] = cfg.faces[f].inflow_from_reference ? 1 : 0;
   }
   view_.params = cfg.collision;
   view_.nbnd = static_cast<int>(lattice_.boundary_cells().size());
+  boundary_values_ = lattice_.boundary_values();
+}
+
+void Solver::clear_reference_change() {
+  const auto& cells = lattice_.boundary_cells();
+  for (std::size_t b = 0; b < cells.size(); ++b)
+    if (static_cast<CellType>(lattice_.types()[cells[b]] & ~kGeneralBit) == CellType::ImpedanceOutlet) boundary_values_[4 * b + 3] = 0.0f;
+  reference_change_pending_ = false;
+  do_set_boundary_values(boundary_values_);
+}
+
+void Solver::set_boundary_values(const std::vector<float>& values) {
+  if (values.size() != boundary_values_.size()) throw ConfigError("set_boundary_values: expected 4 values per open-boundary cell");
+  for (float v : values)
+    if (!std::isfinite(v)) throw ConfigError("set_boundary_values: value is not finite");
+  const auto& cells = lattice_.boundary_cells();
+  const auto& normals = lattice_.boundary_normals();
+  for (std::size_t b = 0; b < cells.size(); ++b) {
+    const auto t = static_cast<CellType>(lattice_.types()[cells[b]] & ~kGeneralBit);
+    float shift = 0.0f;
+    if (t == CellType::ImpedanceOutlet) {
+      const int axis = normals[b] >> 1, sgn = (normals[b] & 1) ? 1 : -1;
+      // outward normal change of the reference, added to any change not yet stepped
+      shift = boundary_values_[4 * b + 3] + sgn * (values[4 * b + axis] - boundary_values_[4 * b + axis]);
+      reference_change_pending_ = reference_change_pending_ || shift != 0.0f;
+    }
+    for (int k = 0; k < 3; ++k) boundary_values_[4 * b + k] = values[4 * b + k];
+    boundary_values_[4 * b + 3] = t == CellType::ImpedanceOutlet ? shift : values[4 * b + 3];
+  }
+  do_set_boundary_values(boundary_values_);
 }
 
 void Solver::initialize(const std::vector<float>& rho, const std::vector<float>& u) {
@@ -53,6 +84,9 @@ void Solver::initialize(const std::vector<float>& rho, const std::vector<float>&
     const float s = std::sqrt(u[3 * c] * u[3 * c] + u[3 * c + 1] * u[3 * c + 1] + u[3 * c + 2] * u[3 * c + 2]);
     if (!(s <= umax)) throw ConfigError("initialize: initial velocity above the Mach limit or not finite");
   }
+  if (reference_change_pending_) {  // the new state is the reference's: nothing left to follow
+    clear_reference_change();
+  }
   do_initialize(rho, u);
   steps_ = 0;
 }
@@ -62,6 +96,7 @@ void Solver::step(long n) {
   for (long k = 0; k < n; ++k) {
     do_step(steps_ % 2 == 1);
     ++steps_;
+    if (reference_change_pending_) clear_reference_change();  // the impedance outlets took it in this step
     if (interval > 0 && steps_ % interval == 0) check_divergence();
   }
 }
@@ -111,6 +146,42 @@ void Solver::set_uniform_force(const std::array<float, 3>& f) {
     view_.uniform_force[a] = f[a];
   }
   sync_view();
+}
+
+FrameForce frame_force(const FrameMotion& m) {
+  const auto& w = m.omega;
+  const auto& dw = m.omega_dot;
+  const float ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+  // a(p) = -a_O - dw x r - w x (w x r), r = p - centre; w x (w x r) = w (w.r) - |w|^2 r.
+  // gradient G = -[dw]x - (w w^T - |w|^2 I); accel = -a_O - G centre.
+  FrameForce f;
+  float* G = f.gradient;
+  const float cross[9] = {0, -dw[2], dw[1], dw[2], 0, -dw[0], -dw[1], dw[0], 0};
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) G[3 * a + b] = -cross[3 * a + b] - w[a] * w[b] + (a == b ? ww : 0.0f);
+  for (int a = 0; a < 3; ++a) {
+    f.accel[a] = -m.acceleration[a];
+    for (int b = 0; b < 3; ++b) f.accel[a] -= G[3 * a + b] * m.centre[b];
+    f.omega[a] = w[a];
+  }
+  return f;
+}
+
+void Solver::set_frame_motion(const FrameMotion& m) {
+  bool any = false;
+  for (int a = 0; a < 3; ++a) {
+    for (float x : {m.acceleration[a], m.omega[a], m.omega_dot[a], m.centre[a]})
+      if (!std::isfinite(x)) throw ConfigError("set_frame_motion: a value is not finite");
+    any = any || m.acceleration[a] != 0.0f || m.omega[a] != 0.0f || m.omega_dot[a] != 0.0f;
+  }
+  view_.frame = frame_force(m);
+  view_.frame_active = any;
+  sync_view();
+}
+
+void Solver::set_wall_motion(int wall, const WallMotion& m) {
+  lattice_.set_wall_motion(wall, m);
+  sync_walls();
 }
 
 void Solver::check_divergence() {

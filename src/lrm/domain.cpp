@@ -1,4 +1,4 @@
-// The LRM fluid domain, isolated rotor (see domain.hpp).
+// The LRM fluid domain (see domain.hpp).
 #include "ship_lrm/lrm/domain.hpp"
 
 #include <algorithm>
@@ -29,7 +29,10 @@ lbm::Lattice make_lattice(const LrmConfig& c, const lbm::UnitConverter& u, int e
   lc.nx = lc.ny = lc.nz = edge;
   lc.collision.nu = static_cast<float>(u.lattice_viscosity());
   lc.collision.smagorinsky = static_cast<float>(c.smagorinsky);
-  for (int f = 0; f < 6; ++f) lc.faces[f].type = c.faces[f];
+  for (int f = 0; f < 6; ++f) {
+    lc.faces[f].type = c.faces[f];
+    lc.faces[f].inflow_from_reference = true;  // the faces know the undisturbed air (set_motion)
+  }
   lc.mach_guard = 0.9f;
   return lbm::Lattice(lc);
 }
@@ -53,32 +56,67 @@ LrmDomain::LrmDomain(const LrmConfig& cfg)
   for (const auto& c : disk_.cells()) disk_cells_.push_back(static_cast<std::uint32_t>(solver_->lattice().index(c.i, c.j, disk_layer_)));
 }
 
+Vec3 LrmDomain::position(int i, int j, int k) const { return Vec3(i - centre_, j - centre_, k - centre_) * units_.dx(); }
+
 void LrmDomain::set_stream(const Vec3& air) {
-  const Vec3 u = air * (units_.dt() / units_.dx());
+  Motion m;
+  m.air_velocity = air;
+  set_motion(m);
+}
+
+void LrmDomain::set_motion(const Motion& m) {
+  for (const Vec3* v : {&m.air_velocity, &m.omega, &m.omega_dot, &m.hub_acceleration})
+    if (!v->allFinite()) throw lbm::ConfigError("LRM: the domain motion is not finite");
+  const bool faces_same = motion_set_ && m.air_velocity == motion_.air_velocity && m.omega == motion_.omega;
+  const bool frame_same =
+      motion_set_ && m.omega == motion_.omega && m.omega_dot == motion_.omega_dot && m.hub_acceleration == motion_.hub_acceleration;
+  if (faces_same && frame_same) return;  // unchanged (the coupled step calls this every step)
+  const double to_lattice = units_.dt() / units_.dx();
   const double cs = 1.0 / std::sqrt(3.0);
-  if (u.norm() > lbm::kMaxSetupMach * cs)
-    throw lbm::ConfigError("LRM: a stream of " + std::to_string(air.norm()) + " m/s is beyond the lattice Mach limit " +
-                           std::to_string(lbm::kMaxSetupMach) + " at N = " + std::to_string(cfg_.nodes) +
-                           " (largest: " + std::to_string(units_.to_physical_velocity(lbm::kMaxSetupMach * cs)) + " m/s)");
-  if (u == stream_lattice_ && stream_set_) return;  // unchanged (the coupled step calls this every step)
-  const auto& lat = solver_->lattice();
-  const auto& cells = lat.boundary_cells();
-  std::vector<float> values(4 * cells.size(), 0.0f);
-  for (size_t k = 0; k < cells.size(); ++k) {
-    values[4 * k + 0] = static_cast<float>(u.x());
-    values[4 * k + 1] = static_cast<float>(u.y());
-    values[4 * k + 2] = static_cast<float>(u.z());
+  if (!faces_same) {
+    const auto& cells = solver_->lattice().boundary_cells();
+    std::vector<float> values(4 * cells.size(), 0.0f);
+    double fastest = 0;
+    for (size_t k = 0; k < cells.size(); ++k) {
+      const size_t c = cells[k];
+      const int i = static_cast<int>(c % edge_), j = static_cast<int>((c / edge_) % edge_);
+      const int l = static_cast<int>(c / (static_cast<size_t>(edge_) * edge_));
+      const Vec3 u = (m.air_velocity - m.omega.cross(position(i, j, l))) * to_lattice;
+      fastest = std::max(fastest, u.norm());
+      for (int d = 0; d < 3; ++d) values[4 * k + d] = static_cast<float>(u[d]);
+    }
+    if (fastest > lbm::kMaxSetupMach * cs)
+      throw lbm::ConfigError("LRM: a face velocity of " + std::to_string(fastest / to_lattice) + " m/s is beyond the lattice Mach limit " +
+                             std::to_string(lbm::kMaxSetupMach) + " at N = " + std::to_string(cfg_.nodes) +
+                             " (largest: " + std::to_string(units_.to_physical_velocity(lbm::kMaxSetupMach * cs)) + " m/s)");
+    solver_->set_boundary_values(values);
   }
-  solver_->set_boundary_values(values);
-  stream_lattice_ = u;
-  stream_set_ = true;
+  if (!frame_same) {
+    lbm::FrameMotion f;
+    const double dt = units_.dt();
+    for (int d = 0; d < 3; ++d) {
+      f.acceleration[d] = static_cast<float>(m.hub_acceleration[d] * dt * dt / units_.dx());
+      f.omega[d] = static_cast<float>(m.omega[d] * dt);
+      f.omega_dot[d] = static_cast<float>(m.omega_dot[d] * dt * dt);
+      f.centre[d] = static_cast<float>(centre_);
+    }
+    solver_->set_frame_motion(f);
+  }
+  motion_ = m;
+  motion_set_ = true;
 }
 
 void LrmDomain::restart_flow() {
   const size_t n = solver_->lattice().cells();
+  const double to_lattice = units_.dt() / units_.dx();
   std::vector<float> u(3 * n);
-  for (size_t k = 0; k < n; ++k)
-    for (int d = 0; d < 3; ++d) u[3 * k + d] = static_cast<float>(stream_lattice_[d]);
+  for (int l = 0; l < edge_; ++l)
+    for (int j = 0; j < edge_; ++j)
+      for (int i = 0; i < edge_; ++i) {
+        const Vec3 v = (motion_.air_velocity - motion_.omega.cross(position(i, j, l))) * to_lattice;
+        const size_t k = solver_->lattice().index(i, j, l);
+        for (int d = 0; d < 3; ++d) u[3 * k + d] = static_cast<float>(v[d]);
+      }
   solver_->initialize(std::vector<float>(n, 1.0f), u);
 }
 

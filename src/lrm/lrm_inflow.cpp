@@ -8,10 +8,21 @@ namespace ship_lrm::lrm {
 LrmInflow::LrmInflow(const LrmConfig& cfg, double warm_up) : domain_(cfg), warm_up_(warm_up) {}
 
 void LrmInflow::take(const rotor::RotorDiskState& s) {
-  domain_.set_stream(-s.hub_velocity);
+  LrmDomain::Motion m;
+  m.air_velocity = -s.hub_velocity;
+  m.omega = s.body_rate;
+  const double dt = s.time - previous_time_;
+  if (have_previous_ && dt > 0) {
+    // d/dt in the inertial frame of a vector given in rotating axes: dV/dt|mr + omega x V
+    m.omega_dot = (s.body_rate - previous_rate_) / dt;
+    m.hub_acceleration = (s.hub_velocity - previous_velocity_) / dt + s.body_rate.cross(s.hub_velocity);
+  }
+  domain_.set_motion(m);
   domain_.set_rotor_forces(s.harmonics);
-  body_rate_ = s.body_rate;
-  radius_ = s.radius;
+  have_previous_ = true;
+  previous_time_ = s.time;
+  previous_velocity_ = s.hub_velocity;
+  previous_rate_ = s.body_rate;
 }
 
 void LrmInflow::reset(const rotor::RotorDiskState& state) {
@@ -23,7 +34,6 @@ void LrmInflow::reset(const rotor::RotorDiskState& state) {
   }
   time_ = domain_.time();
   inflow_ = domain_.inflow();
-  rotor::add_frame_rotation(inflow_, body_rate_, radius_);
 }
 
 void LrmInflow::advance(const rotor::RotorDiskState& state, double dt) {
@@ -35,7 +45,6 @@ void LrmInflow::advance(const rotor::RotorDiskState& state, double dt) {
   if (n <= 0) return;  // a coarse lattice steps less often; the last inflow holds meanwhile
   domain_.step(n);
   inflow_ = domain_.inflow();
-  rotor::add_frame_rotation(inflow_, body_rate_, radius_);
 }
 
 }  // namespace ship_lrm::lrm

@@ -70,6 +70,28 @@ SHIP_LRM_HD Macro macro_from_populations(const float g[Q], const float force[3])
   return m;
 }
 
+// Fictitious forces of a non-inertial frame (the LRM domain fixed to the rotorcraft; ARCHITECTURE.md
+// "Moving the domain"). Per unit mass, with r from the frame's reference point (Landau & Lifshitz,
+// Mechanics, 3rd ed., section 39, eq. 39.7):
+//   a = -a_O - dOmega/dt x r - Omega x (Omega x r) - 2 Omega x u.
+// The terms without u are affine in the cell position p: a(p) = accel + gradient p (gradient row-major),
+// so a kernel needs 15 numbers; the Coriolis term uses the momentum j = rho u of the populations
+// (explicit; its error is of order (|Omega| dt)^2, 1e-6 for a helicopter's rates).
+struct FrameForce {
+  float accel[3] = {0, 0, 0};
+  float gradient[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+  float omega[3] = {0, 0, 0};
+};
+
+// Adds the fictitious force density of `fr` at cell position p to F (lattice units).
+SHIP_LRM_HD void add_frame_force(const FrameForce& fr, const float p[3], float rho, const float j[3], float F[3]) {
+  const float* m = fr.gradient;
+  const float* w = fr.omega;
+  F[0] += rho * (fr.accel[0] + m[0] * p[0] + m[1] * p[1] + m[2] * p[2]) - 2.0f * (w[1] * j[2] - w[2] * j[1]);
+  F[1] += rho * (fr.accel[1] + m[3] * p[0] + m[4] * p[1] + m[5] * p[2]) - 2.0f * (w[2] * j[0] - w[0] * j[2]);
+  F[2] += rho * (fr.accel[2] + m[6] * p[0] + m[7] * p[1] + m[8] * p[2]) - 2.0f * (w[0] * j[1] - w[1] * j[0]);
+}
+
 // Norm sqrt(Pi:Pi) of the non-equilibrium momentum flux Pi_ab = sum c_a c_b (f - f_eq)
 // (thesis eq. 6.13).
 SHIP_LRM_HD float pi_neq_norm(const float g[Q], const Macro& m) {
@@ -177,7 +199,9 @@ SHIP_LRM_HD void reconstruct_fd(float g[Q], float rho, const float u[3], const f
 // the change of density and outward normal velocity over one step must satisfy
 //   cs^2 d(rho) + 1/2 rho d(u_n)^2 - rho cs d(u_n) = 0,
 // i.e. only an outgoing acoustic wave (p' = rho cs u') is admitted, together with the Zou-He
-// relation rho (1 + u_n) = K. Solved for rho by Newton-Raphson; returns rho.
+// relation rho (1 + u_n) = K. Solved for rho by Newton-Raphson; returns rho. In a moving domain the
+// undisturbed flow itself changes; d(u_n) is then taken relative to it (un_prev includes the
+// reference's change), so that only the disturbance radiates and the mean flow keeps its density.
 SHIP_LRM_HD float impedance_density(float K, float rho_prev, float un_prev) {
   const float cs = 0.57735026919f;
   float rho = rho_prev;

@@ -25,6 +25,10 @@ struct FaceCondition {
   FaceType type = FaceType::Wall;
   std::array<float, 3> velocity{0, 0, 0};  // MovingWall / VelocityInlet (lattice units)
   float density = 1.0f;                    // PressureOutlet
+  // ImpedanceOutlet: where the flow enters, take the tangential velocity from the reference flow
+  // given with Solver::set_boundary_values (a domain inside a known outer flow, the LRM) instead of
+  // extrapolating it from the interior.
+  bool inflow_from_reference = false;
 };
 
 struct LatticeConfig {
@@ -75,6 +79,8 @@ class Lattice {
   // Moving no-slip wall cell that belongs to rigid body `wall` (see add_wall_motion).
   void set_moving_wall(int x, int y, int z, int wall);
   int add_wall_motion(const WallMotion& m);
+  // Change the motion of a wall (also after finalize(); Solver::set_wall_motion passes it on).
+  void set_wall_motion(int wall, const WallMotion& m);
   // Open boundary cells; only on a non-periodic face of the domain.
   void set_velocity_inlet(int x, int y, int z, const std::array<float, 3>& u);
   void set_pressure_outlet(int x, int y, int z, float rho);

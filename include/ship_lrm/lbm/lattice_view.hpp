@@ -28,17 +28,21 @@ struct LatticeView {
   const std::uint8_t* tag = nullptr;   // fluid: reflection rule (see reflect); moving wall: index
   const float* force = nullptr;        // optional force density field, SoA 3 * ncells
   float uniform_force[3] = {0, 0, 0};
-  std::uint8_t face[6] = {0, 0, 0, 0, 0, 0};  // FaceType per face
-  float face_velocity[6][3] = {};             // wall velocity of MovingWall faces
+  bool frame_active = false;  // add the fictitious forces of `frame` (non-inertial domain)
+  FrameForce frame;
+  std::uint8_t face[6] = {0, 0, 0, 0, 0, 0};                   // FaceType per face
+  float face_velocity[6][3] = {};                              // wall velocity of MovingWall faces
+  std::uint8_t face_inflow_reference[6] = {0, 0, 0, 0, 0, 0};  // FaceCondition::inflow_from_reference
   const WallMotion* walls = nullptr;
   CollisionParams params;
   // Open boundary cells (thesis 6.1.3), numbered b = 0 .. nbnd-1.
   int nbnd = 0;
-  const std::uint32_t* bnd_cell = nullptr;    // cell index of b
-  const std::uint8_t* bnd_normal = nullptr;   // outward normal code axis*2 + (sign > 0)
-  const std::uint32_t* bnd_mask = nullptr;    // link mask of b (see gather_masked)
-  const float* bnd_value = nullptr;           // 4 * nbnd: inlet velocity (3) | outlet density ([0])
-  float* aux = nullptr;                       // macroscopic state of open-boundary support cells, SoA 4 * ncells
+  const std::uint32_t* bnd_cell = nullptr;   // cell index of b
+  const std::uint8_t* bnd_normal = nullptr;  // outward normal code axis*2 + (sign > 0)
+  const std::uint32_t* bnd_mask = nullptr;   // link mask of b (see gather_masked)
+  const float* bnd_value =
+      nullptr;           // 4 * nbnd: inlet velocity (3) | outlet density ([0]) | impedance: reference velocity (3), its normal change ([3])
+  float* aux = nullptr;  // macroscopic state of open-boundary support cells, SoA 4 * ncells
   const std::int64_t* row_offsets = nullptr;  // 27 * Q neighbour offsets of bulk cells per cell class
 };
 
@@ -62,20 +66,51 @@ inline std::size_t population_stride(std::size_t ncells) {
   return (ncells + page - 1) / page * page + shift;
 }
 
-// Force on a cell: none, the uniform force only, or uniform plus the per-cell field.
-enum ForceMode : int { kNoForce = 0, kUniformForce = 1, kForceField = 2 };
+// Force on a cell: none, the uniform force only, uniform plus the per-cell field, or all of these
+// plus the fictitious forces of a non-inertial frame (which depend on the cell's state).
+enum ForceMode : int { kNoForce = 0, kUniformForce = 1, kForceField = 2, kFrameForce = 3 };
 
-template <int kForce>
-SHIP_LRM_HD void force_at(const LatticeView& v, std::size_t cell, float F[3]) {
-  for (int a = 0; a < 3; ++a)
-    F[a] = (kForce == kNoForce ? 0.0f : v.uniform_force[a]) + (kForce == kForceField ? v.force[a * v.ncells + cell] : 0.0f);
+SHIP_LRM_HD void cell_coords(const LatticeView& v, std::size_t c, int& x, int& y, int& z) {
+  x = static_cast<int>(c % v.n[0]);
+  const std::size_t r = c / v.n[0];
+  y = static_cast<int>(r % v.n[1]);
+  z = static_cast<int>(r / v.n[1]);
 }
-SHIP_LRM_HD void force_at(const LatticeView& v, std::size_t cell, float F[3]) {
-  v.force ? force_at<kForceField>(v, cell, F) : force_at<kUniformForce>(v, cell, F);
+
+// Force density on cell c whose pre-collision populations are g.
+template <int kForce>
+SHIP_LRM_HD void cell_force(const LatticeView& v, std::size_t c, const float g[Q], float F[3]) {
+  const bool field = kForce == kForceField || (kForce == kFrameForce && v.force != nullptr);
+  for (int a = 0; a < 3; ++a) F[a] = (kForce == kNoForce ? 0.0f : v.uniform_force[a]) + (field ? v.force[a * v.ncells + c] : 0.0f);
+  if (kForce == kFrameForce) {
+    int x, y, z;
+    cell_coords(v, c, x, y, z);
+    const float p[3] = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+    float rho, j[3];
+    moments(g, rho, j);
+    add_frame_force(v.frame, p, rho, j, F);
+  }
 }
 SHIP_LRM_HD int force_mode(const LatticeView& v) {
+  if (v.frame_active) return kFrameForce;
   return v.force ? kForceField
                  : ((v.uniform_force[0] != 0.0f || v.uniform_force[1] != 0.0f || v.uniform_force[2] != 0.0f) ? kUniformForce : kNoForce);
+}
+// The same with the mode chosen at run time (cells off the vectorised bulk path).
+SHIP_LRM_HD void cell_force(const LatticeView& v, std::size_t c, const float g[Q], float F[3]) {
+  switch (force_mode(v)) {
+    case kNoForce:
+      cell_force<kNoForce>(v, c, g, F);
+      break;
+    case kUniformForce:
+      cell_force<kUniformForce>(v, c, g, F);
+      break;
+    case kForceField:
+      cell_force<kForceField>(v, c, g, F);
+      break;
+    default:
+      cell_force<kFrameForce>(v, c, g, F);
+  }
 }
 
 // What lies at (x,y,z) + d: a fluid-like cell (returns true and its index nb) or a wall or the
@@ -182,7 +217,7 @@ SHIP_LRM_HD void update_bulk_cell(const LatticeView& v, std::size_t c, const std
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) g[i] = kOdd ? load_pop(pop(v, d3q19::opp(i), c + off[d3q19::opp(i)])) : load_pop(pop(v, i, c));
   float F[3];
-  force_at<kForce>(v, c, F);
+  cell_force<kForce>(v, c, g, F);
   collide<kSmagorinsky, kForce != kNoForce>(g, F, v.params);
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) {
@@ -219,17 +254,10 @@ SHIP_LRM_HD void update_segment_cell(const LatticeView& v, std::size_t c, pop_t*
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) g[i] = load_pop(src[i][c]);
   float F[3];
-  force_at<kForce>(v, c, F);
+  cell_force<kForce>(v, c, g, F);
   collide<kSmagorinsky, kForce != kNoForce>(g, F, v.params);
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) dst[i][c] = store_pop(g[i]);
-}
-
-SHIP_LRM_HD void cell_coords(const LatticeView& v, std::size_t c, int& x, int& y, int& z) {
-  x = static_cast<int>(c % v.n[0]);
-  const std::size_t r = c / v.n[0];
-  y = static_cast<int>(r % v.n[1]);
-  z = static_cast<int>(r / v.n[1]);
 }
 
 // Link mask of a cell next to walls (Lattice::finalize): bit i set when the cell at c + c_i is a
@@ -290,7 +318,7 @@ SHIP_LRM_HD void update_wall_cell(const LatticeView& v, std::size_t c, std::uint
   cell_coords(v, c, x, y, z);
   float g[Q], F[3];
   gather_cell<kOdd>(v, c, x, y, z, mask, g);
-  force_at(v, c, F);
+  cell_force(v, c, g, F);
   collide(g, F, v.params);
   scatter_cell<kOdd>(v, c, x, y, z, mask, g);
 }
@@ -324,7 +352,7 @@ SHIP_LRM_HD Macro boundary_macro(const LatticeView& v, int b, const float g[Q], 
   if (t == CellType::PressureOutlet)
     m.rho = v.bnd_value[4 * b];
   else
-    m.rho = impedance_density(K, prev.rho, sgn * prev.u[axis]);
+    m.rho = impedance_density(K, prev.rho, sgn * prev.u[axis] + v.bnd_value[4 * b + 3]);  // + reference change
   for (int a = 0; a < 3; ++a) m.u[a] = (a == axis) ? sgn * (K / m.rho - 1.0f) : zou_he_tangential_momentum(g, axis, sgn, a) / m.rho;
   return m;
 }
@@ -379,25 +407,36 @@ SHIP_LRM_HD constexpr bool open_face(FaceType f) {
 }
 
 // Is (x,y,z) on two or more open faces (an edge or corner where open boundaries meet)? If so, `diag`
-// is its inward diagonal neighbour (one step inwards along each such axis), if that is a fluid cell.
-SHIP_LRM_HD bool open_edge_neighbour(const LatticeView& v, int x, int y, int z, std::size_t& diag) {
-  int p[3] = {x, y, z};
+// is its inward diagonal neighbour (one step inwards along each such axis), if that is a fluid
+// cell, and `diag2` the next one along the same diagonal (diag itself where that is not fluid).
+SHIP_LRM_HD bool open_edge_neighbour(const LatticeView& v, int x, int y, int z, std::size_t& diag, std::size_t& diag2) {
+  int p[3] = {x, y, z}, step[3] = {0, 0, 0};
   int faces = 0;
   for (int a = 0; a < 3; ++a) {
     const bool lo = p[a] == 0 && open_face(static_cast<FaceType>(v.face[2 * a]));
     const bool hi = p[a] == v.n[a] - 1 && open_face(static_cast<FaceType>(v.face[2 * a + 1]));
     if (lo)
-      p[a] += 1;
+      step[a] = 1;
     else if (hi)
-      p[a] -= 1;
+      step[a] = -1;
     else
       continue;
     ++faces;
   }
   if (faces < 2) return false;
-  diag = cell_index(v, p[0], p[1], p[2]);
-  return !is_wall(static_cast<CellType>(v.type[diag] & ~kGeneralBit)) &&
-         !is_open_boundary(static_cast<CellType>(v.type[diag] & ~kGeneralBit));
+  auto interior = [&](int k, std::size_t& c) {
+    int q[3];
+    for (int a = 0; a < 3; ++a) {
+      q[a] = p[a] + k * step[a];
+      if (q[a] < 0 || q[a] >= v.n[a]) return false;
+    }
+    c = cell_index(v, q[0], q[1], q[2]);
+    const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
+    return !is_wall(t) && !is_open_boundary(t);
+  };
+  if (!interior(1, diag)) return false;
+  if (!interior(2, diag2)) diag2 = diag;
+  return true;
 }
 
 // Density and velocity of a fluid cell from its pre-collision populations (step parity kOdd;
@@ -408,7 +447,7 @@ SHIP_LRM_HD Macro fluid_macro(const LatticeView& v, std::size_t c) {
   cell_coords(v, c, x, y, z);
   float g[Q], F[3];
   gather<kOdd>(v, x, y, z, c, g);
-  force_at(v, c, F);
+  cell_force(v, c, g, F);
   return macro_from_populations(g, F);
 }
 
@@ -419,7 +458,7 @@ SHIP_LRM_HD void update_support_macro(const LatticeView& v, std::size_t c, int b
   cell_coords(v, c, x, y, z);
   float g[Q], F[3];
   gather_cell<kOdd>(v, c, x, y, z, mask, g);
-  force_at(v, c, F);
+  cell_force(v, c, g, F);
   if (b < 0) {
     store_aux(v, c, macro_from_populations(g, F));
     return;
@@ -428,23 +467,34 @@ SHIP_LRM_HD void update_support_macro(const LatticeView& v, std::size_t c, int b
   const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
   std::size_t in;
   const int axis = v.bnd_normal[b] >> 1, sgn = (v.bnd_normal[b] & 1) ? 1 : -1;
-  std::size_t diag;
-  if (open_edge_neighbour(v, x, y, z, diag)) {
+  std::size_t diag, diag2;
+  if (open_edge_neighbour(v, x, y, z, diag, diag2)) {
     // Edge or corner of two or three open faces: the known-population sums mix in links from
-    // across the other face, so take what is not prescribed from the inward diagonal neighbour
-    // (extrapolation, as in Guo, Zheng & Shi 2002, Chinese Physics 11, 366) and reconstruct the
-    // cell completely in pass 2.
+    // across the other face, so take what is not prescribed from the inward diagonal neighbours
+    // (extrapolation, as in Guo, Zheng & Shi 2002, Chinese Physics 11, 366; the velocity linearly,
+    // which keeps the linear field of a rotating domain) and reconstruct the cell in pass 2.
     const Macro mi = fluid_macro<kOdd>(v, diag);
+    const Macro mi2 = diag2 == diag ? mi : fluid_macro<kOdd>(v, diag2);
     if (t != CellType::PressureOutlet) m.rho = mi.rho;
     if (t != CellType::VelocityInlet)
-      for (int a = 0; a < 3; ++a) m.u[a] = mi.u[a];
+      for (int a = 0; a < 3; ++a) m.u[a] = 2.0f * mi.u[a] - mi2.u[a];
   } else if (t == CellType::ImpedanceOutlet && support_cell(v, x, y, z, axis, -sgn, in)) {
-    // Tangential velocity of the interior neighbour (zero normal gradient): the Zou-He estimate from
-    // the known populations is biased by the normal flow (6 % of a 3 m/s cross-flow at 10 m/s
-    // through-flow); density and normal velocity stay those of eq. 6.15.
+    // Tangential velocity extrapolated linearly from the two interior neighbours along the normal
+    // (zero second derivative): the Zou-He estimate from the known populations is biased by the
+    // normal flow (6 % of a 3 m/s cross-flow at 10 m/s through-flow), and a zero gradient drifts in
+    // a rotating domain, where the tangential velocity -omega x r varies along the normal. Density
+    // and normal velocity stay those of eq. 6.15.
+    // Where the flow enters (u.n < 0) the tangential velocity comes from outside instead: the
+    // reference flow's (characteristic reasoning: vorticity is carried inwards; Poinsot & Lele 1992,
+    // J. Comput. Phys. 101, 104, table IV).
     const Macro mi = fluid_macro<kOdd>(v, in);
+    std::size_t in2;
+    const bool second =
+        support_cell(v, x, y, z, axis, -2 * sgn, in2) && !is_open_boundary(static_cast<CellType>(v.type[in2] & ~kGeneralBit));
+    const Macro mi2 = second ? fluid_macro<kOdd>(v, in2) : mi;
+    const bool inflow = v.face_inflow_reference[v.bnd_normal[b]] && sgn * m.u[axis] < 0.0f;
     for (int a = 0; a < 3; ++a)
-      if (a != axis) m.u[a] = mi.u[a];
+      if (a != axis) m.u[a] = inflow ? v.bnd_value[4 * b + a] : 2.0f * mi.u[a] - mi2.u[a];
   } else if (t == CellType::PressureOutlet && support_cell(v, x, y, z, axis, -sgn, in)) {
     // Neumann-type outflow (thesis 6.1.3): the velocity of the interior neighbour (zero normal
     // gradient) at the same time level, with the prescribed density. Taking u from the known
@@ -463,7 +513,6 @@ SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
   cell_coords(v, c, x, y, z);
   float g[Q], F[3];
   gather_cell<kOdd>(v, c, x, y, z, v.bnd_mask[b], g);
-  force_at(v, c, F);
   const Macro m = load_aux(v, c);
   // Every open-boundary cell is rebuilt from its state (rho, u) and the velocity gradient (Latt et al.
   // 2008). The impedance outlet's state comes from eq. 6.15; the thesis completes it with the
@@ -479,6 +528,7 @@ SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
                       0.5f * (grad[0][2] + grad[2][0]),
                       0.5f * (grad[1][2] + grad[2][1])};
   reconstruct_fd(g, m.rho, m.u, S, omega_from_nu(v.params.nu));
+  cell_force(v, c, g, F);
   collide(g, F, v.params);
   scatter_cell<kOdd>(v, c, x, y, z, v.bnd_mask[b], g);
 }

@@ -24,6 +24,16 @@ class DivergenceError : public std::runtime_error {
   int x, y, z;
 };
 
+// Motion of a lattice's frame (see Solver::set_frame_motion), lattice units.
+struct FrameMotion {
+  std::array<float, 3> acceleration{0, 0, 0};  // of the reference point, frame axes
+  std::array<float, 3> omega{0, 0, 0};         // angular velocity, frame axes
+  std::array<float, 3> omega_dot{0, 0, 0};     // its rate of change
+  std::array<float, 3> centre{0, 0, 0};        // reference point, cell coordinates
+};
+// The fictitious-force coefficients of a frame motion (Landau & Lifshitz eq. 39.7, see FrameForce).
+FrameForce frame_force(const FrameMotion& m);
+
 // Macroscopic fields, one value (rho) or three (u, interleaved x y z) per cell, x fastest.
 struct Fields {
   std::vector<float> rho;
@@ -50,14 +60,24 @@ class Solver {
   // Force density field (3 per cell, interleaved; empty clears it), added to the uniform force.
   virtual void set_force_field(const std::vector<float>& f) = 0;
   void set_uniform_force(const std::array<float, 3>& f);
+  // Motion of the lattice's frame relative to an inertial one (lattice units: cells, steps; centre in
+  // cell coordinates): the fictitious forces of add_frame_force act on every fluid cell from now on.
+  // A frame at rest (all zero) switches them off.
+  void set_frame_motion(const FrameMotion& m);
+  // New rigid-body motion of moving wall `wall` (an index from Lattice::add_wall_motion).
+  void set_wall_motion(int wall, const WallMotion& m);
   // Velocity (3 per listed cell, interleaved) of some cells; cheaper than fields() on the CPU.
   std::vector<float> velocities(const std::vector<std::uint32_t>& cells);
   // Change the force density of some cells (3 values per listed cell), others keep theirs; the
   // first call sets up a zero force field. Cheaper than set_force_field() on the CPU.
   void set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f);
   // Values of the open-boundary cells, 4 per cell in lattice().boundary_cells() order:
-  // velocity inlet (ux, uy, uz, -), pressure outlet (rho, -, -, -), impedance (ignored).
-  virtual void set_boundary_values(const std::vector<float>& values) = 0;
+  // velocity inlet (ux, uy, uz, -), pressure outlet (rho, -, -, -), impedance outlet (the undisturbed
+  // flow's velocity ux, uy, uz there, -). An impedance outlet admits only outgoing waves relative to
+  // that reference: when it changes (a moving or accelerating domain, a new stream), the outlet's
+  // normal velocity follows the change in the next step without a density jump (see
+  // impedance_density). The 4th value is the solver's own.
+  void set_boundary_values(const std::vector<float>& values);
   // Check the guard now (NaN / speed above mach_guard * c_s); throws DivergenceError.
   void check_divergence();
   // Raw populations (shifted, g = f - w) for tests: Q * cells, SoA.
@@ -71,7 +91,9 @@ class Solver {
   virtual void do_step(bool odd) = 0;
   virtual void do_fields(bool next_odd, Fields& out) = 0;
   virtual void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) = 0;
-  virtual void sync_view() = 0;  // after view_ parameters changed on the host
+  virtual void sync_view() = 0;                                               // after view_ parameters changed on the host
+  virtual void sync_walls() {}                                                // after lattice_'s wall motions changed (device copy)
+  virtual void do_set_boundary_values(const std::vector<float>& values) = 0;  // validated, 4 per cell
   // Defaults go through fields() / set_force_field(); backends may do better.
   virtual void do_velocities(bool next_odd, const std::vector<std::uint32_t>& cells, std::vector<float>& out);
   virtual void do_set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f);
@@ -80,6 +102,9 @@ class Solver {
   virtual long long do_find_divergent(bool next_odd, float limit) = 0;
 
   Lattice lattice_;
+  std::vector<float> boundary_values_;  // host copy; 4th value of impedance cells: reference change
+  bool reference_change_pending_ = false;
+  void clear_reference_change();
   LatticeView view_;  // host copy of the view; device pointers in the CUDA backend
   long steps_ = 0;
 };

@@ -6,8 +6,13 @@
 // cell layer; the inflow is read back as mean + linear harmonics (rotor/disk_coupling.hpp), in m/s
 // relative to the domain: the rotor-inflow interface of inflow_model.hpp.
 //
-// This first version is the isolated rotor in a uniform stream (thesis 8.1): no fuselage, ship or
-// ground walls and no domain rotation yet.
+// Domain motion (ARCHITECTURE.md "Moving the domain"): the grid stays fixed to the rotorcraft, so
+// it translates and rotates with it. The faces get the air velocity relative to the moving grid,
+// air - omega x r, and every cell gets the frame's fictitious forces (lbm::add_frame_force). The
+// thesis' alternative was an ALE domain that interpolates the populations each step. That is
+// diffusive, and the thesis neglects rotation. Here a domain moving at constant velocity is exactly
+// the fixed domain with the stream at its faces (Galilean invariance), and rotation costs 15 numbers
+// per step.
 #pragma once
 
 #include <array>
@@ -53,10 +58,22 @@ class LrmDomain {
   const rotor::DiskCoupling& disk() const { return disk_; }
   lbm::Solver& solver() { return *solver_; }
 
-  // Air velocity relative to the domain at the velocity faces (m/s, mr axes); a uniform stream.
-  // Throws lbm::ConfigError when it exceeds the lattice Mach limit.
+  // Motion of the domain relative to the undisturbed air (uniform, at rest or in steady wind).
+  struct Motion {
+    Vec3 air_velocity = Vec3::Zero();      // air relative to the hub, mr axes, m/s (= -hub velocity in still air)
+    Vec3 omega = Vec3::Zero();             // angular velocity of the mr frame, mr axes, rad/s
+    Vec3 omega_dot = Vec3::Zero();         // its rate of change, rad/s^2
+    Vec3 hub_acceleration = Vec3::Zero();  // inertial acceleration of the hub, mr axes, m/s^2
+  };
+  // The velocity faces get air_velocity - omega x r (r from the hub), every cell the fictitious
+  // forces. Throws lbm::ConfigError when a face velocity exceeds the lattice Mach limit.
+  void set_motion(const Motion& m);
+  // A domain translating at constant velocity: set_motion with air_velocity only.
   void set_stream(const Vec3& air_velocity);
-  // Restart the flow: every cell at rest density with the current stream's velocity (no rotor wake).
+  const Motion& motion() const { return motion_; }
+  // Position of a cell centre relative to the hub (m, mr axes).
+  Vec3 position(int i, int j, int k) const;
+  // Restart the flow: every cell at rest density with the current motion's air velocity (no wake).
   // An impulsive start from rest instead sends a compression wave through the domain that the
   // non-reflecting outlets let out without restoring the density (no reference pressure).
   void restart_flow();
@@ -77,8 +94,8 @@ class LrmDomain {
   std::vector<std::uint32_t> disk_cells_;  // lattice indices of the disk cells, disk_.cells() order
   std::unique_ptr<lbm::Solver> solver_;
   long steps_ = 0;
-  Vec3 stream_lattice_ = Vec3::Zero();
-  bool stream_set_ = false;
+  Motion motion_;
+  bool motion_set_ = false;
 };
 
 }  // namespace ship_lrm::lrm

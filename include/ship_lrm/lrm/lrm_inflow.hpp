@@ -3,10 +3,11 @@
 // model's time, and the inflow over the disk comes back. Drop-in replacement for Pitt-Peters
 // behind rotor::InflowModel.
 //
-// Frame: the domain is fixed to the rotor's mr frame and the stream at its velocity faces is the air
-// velocity relative to the hub (-hub_velocity). Not yet included: the domain's rotation (fictitious
-// forces) and walls; the inflow therefore lacks the -omega x r term a rotating grid would carry, and
-// Pitt-Peters' rotation term is added instead so the rotor sees the same kinematics.
+// Frame: the domain is fixed to the rotor's mr frame, so it translates and rotates with the
+// rotorcraft (LrmDomain::Motion). Its faces get the air velocity relative to the moving grid
+// (-hub_velocity - omega x r). The frame's angular acceleration and the hub's acceleration come from
+// differences between coupling steps. The inflow read back is relative to the rotating mr frame, as
+// the interface asks.
 #pragma once
 
 #include <memory>
@@ -38,8 +39,10 @@ class LrmInflow final : public rotor::InflowModel {
   bool started_ = false;
   double time_ = 0;  // flight-model time reached by the inflow model
   rotor::RotorInflow inflow_;
-  rotor::Vec3 body_rate_ = rotor::Vec3::Zero();
-  double radius_ = 0;
+  // previous coupling step's kinematics, for the accelerations
+  bool have_previous_ = false;
+  double previous_time_ = 0;
+  rotor::Vec3 previous_velocity_ = rotor::Vec3::Zero(), previous_rate_ = rotor::Vec3::Zero();
 };
 
 }  // namespace ship_lrm::lrm
