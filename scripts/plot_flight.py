@@ -4,6 +4,7 @@
 usage: plot_flight.py trim TRIM.csv OUT.png [--reference MEASURED.csv]
        plot_flight.py doublet DOUBLET.csv OUT.png
        plot_flight.py sweep_inflow INFLOW_SWEEP.csv OUT.png
+       plot_flight.py sweep_ground GROUND_SWEEP.csv OUT.png
 
 trim: power, the four controls and the attitudes over speed, laid out like thesis figs. 8.5-8.7.
 A reference CSV (e.g. digitised flight-test points) with any of the same column names is drawn as
@@ -11,6 +12,9 @@ circles beside the model's lines.
 doublet: controls, rates, attitudes, rate of descent, rotor speed and power over time (fig. 8.8).
 sweep_inflow: LRM mean and cosine inflow over speed beside Pitt-Peters, both over the hover
 momentum-theory velocity (thesis figs. 8.1, 8.2).
+sweep_ground: hover, v_mean / v_mean(OGE) over z/R beside Cheeseman-Bennett and Hayden (fig. 8.9);
+forward, v_mean over speed per height beside Glauert times the forward-flight Cheeseman-Bennett
+factor (fig. 8.11).
 """
 import argparse
 import csv
@@ -115,9 +119,44 @@ def plot_sweep_inflow(data, out):
     fig.savefig(out, dpi=110)
 
 
+def plot_sweep_ground(data, out):
+    label = f"LRM N = {int(data['N'][0])}, a = {data['reach'][0]:g}"
+    hover = all(v == 0 for v in data["speed_m_s"])
+    if hover:
+        fig, ax = plt.subplots(figsize=(7, 5))
+        z = data["z_over_R"]
+        ax.plot(z, data["ratio"], "o-", label=label)
+        ax.plot(z, data["cheeseman_bennett"], "--", color="k", label="Cheeseman & Bennett 1955")
+        ax.plot(z, data["hayden"], ":", color="k", label="Hayden 1976 (power ratio)")
+        ax.axhline(1.0, color="grey", lw=0.8)
+        ax.set_xlabel("z / R (hub over ground)")
+        ax.set_ylabel("v_mean / v_mean,OGE")
+        ax.set_title("Hover in ground effect, equal thrust (cf. thesis fig. 8.9)")
+    else:
+        fig, ax = plt.subplots(figsize=(8, 5))
+        heights = sorted(set(data["z_over_R"]))
+        rows = list(zip(data["speed_m_s"], data["z_over_R"], data["lrm_mean_m_s"], data["lrm_mean_oge_m_s"],
+                        data["cheeseman_bennett"], data["momentum_theory_oge_m_s"]))
+        oge = sorted({(r[0], r[3], r[5]) for r in rows})
+        ax.plot([o[0] for o in oge], [o[1] for o in oge], "o-", color="k", label=f"{label}, OGE")
+        ax.plot([o[0] for o in oge], [o[2] for o in oge], "--", color="k", label="Glauert, OGE")
+        for i, h in enumerate(heights):
+            sel = sorted((r for r in rows if r[1] == h), key=lambda r: r[0])
+            c = f"C{i}"
+            ax.plot([r[0] for r in sel], [r[2] for r in sel], "o-", color=c, label=f"LRM z/R = {h:g}")
+            ax.plot([r[0] for r in sel], [r[5] * r[4] for r in sel], "--", color=c, label=f"Glauert x Cheeseman-Bennett, z/R = {h:g}")
+        ax.set_xlabel("speed [m/s]")
+        ax.set_ylabel("mean inflow v_mean [m/s]")
+        ax.set_title("Forward flight in ground effect (cf. thesis fig. 8.11)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("kind", choices=["trim", "doublet", "sweep_inflow"])
+    ap.add_argument("kind", choices=["trim", "doublet", "sweep_inflow", "sweep_ground"])
     ap.add_argument("csv")
     ap.add_argument("png")
     ap.add_argument("--reference")
@@ -127,6 +166,8 @@ def main():
         plot_trim(data, a.png, read(a.reference) if a.reference else None)
     elif a.kind == "doublet":
         plot_doublet(data, a.png)
+    elif a.kind == "sweep_ground":
+        plot_sweep_ground(data, a.png)
     else:
         plot_sweep_inflow(data, a.png)
 

@@ -51,9 +51,150 @@ LrmDomain::LrmDomain(const LrmConfig& cfg)
       centre_(0.5 * (edge_ - 1)),
       disk_(edge_, edge_, centre_, centre_, cfg.radius / units_.dx()),
       disk_layer_(static_cast<int>(std::lround(centre_))) {
-  solver_ = lbm::make_solver(make_lattice(cfg, units_, edge_), cfg.backend);
-  solver_->initialize({}, {});
-  for (const auto& c : disk_.cells()) disk_cells_.push_back(static_cast<std::uint32_t>(solver_->lattice().index(c.i, c.j, disk_layer_)));
+  for (const auto& c : disk_.cells())
+    disk_cells_.push_back(
+        static_cast<std::uint32_t>(c.i + static_cast<std::size_t>(edge_) * (c.j + static_cast<std::size_t>(edge_) * disk_layer_)));
+  owner_.assign(static_cast<std::size_t>(edge_) * edge_ * edge_, -1);
+  rebuild(false);
+}
+
+lbm::WallMotion LrmDomain::lattice_motion(const RigidMotion& m) const {
+  lbm::WallMotion w;
+  for (int d = 0; d < 3; ++d) {
+    w.v[d] = static_cast<float>(m.velocity[d] * units_.dt() / units_.dx());
+    w.omega[d] = static_cast<float>(m.omega[d] * units_.dt());
+    w.centre[d] = static_cast<float>(centre_);
+  }
+  return w;
+}
+
+void LrmDomain::add_wall(std::shared_ptr<WallSurface> wall) {
+  if (!wall) throw lbm::ConfigError("LRM: add_wall got no wall");
+  if (walls_.size() >= 255) throw lbm::ConfigError("LRM: at most 255 walls");
+  walls_.push_back(std::move(wall));
+  try {
+    update_walls();
+  } catch (...) {
+    walls_.pop_back();  // the domain stays as it was
+    throw;
+  }
+}
+
+void LrmDomain::update_walls() {
+  // voxelise: cell centres inside a body
+  std::vector<std::int16_t> owner(owner_.size(), -1);
+  std::vector<bool> moves(walls_.size());
+  for (size_t w = 0; w < walls_.size(); ++w) {
+    const RigidMotion m = walls_[w]->motion();
+    moves[w] = !(m.velocity.isZero(0) && m.omega.isZero(0));
+  }
+  std::size_t count = 0;
+  for (int k = 0; k < edge_; ++k)
+    for (int j = 0; j < edge_; ++j)
+      for (int i = 0; i < edge_; ++i) {
+        const Vec3 p = position(i, j, k);
+        for (size_t w = 0; w < walls_.size(); ++w)
+          if (walls_[w]->signed_distance(p) < 0.0) {
+            owner[i + static_cast<std::size_t>(edge_) * (j + static_cast<std::size_t>(edge_) * k)] = static_cast<std::int16_t>(w);
+            ++count;
+            break;
+          }
+      }
+  for (size_t k = 0; k < disk_cells_.size(); ++k)
+    if (owner[disk_cells_[k]] >= 0)
+      throw lbm::ConfigError("LRM: the " + walls_[owner[disk_cells_[k]]]->name() +
+                             " covers part of the rotor disk; move the rotor clear of it");
+  const bool same = owner == owner_ && moves == wall_moves_;
+  owner_ = std::move(owner);
+  wall_moves_ = std::move(moves);
+  wall_cells_ = count;
+  if (!same) {
+    rebuild(true);
+    ++rebuilds_;
+  }
+  // the motions themselves change without a rebuild
+  for (size_t w = 0, slot = 0; w < walls_.size(); ++w)
+    if (wall_moves_[w]) solver_->set_wall_motion(static_cast<int>(slot++), lattice_motion(walls_[w]->motion()));
+}
+
+void LrmDomain::rebuild(bool carry_flow) {
+  lbm::Lattice lat = make_lattice(cfg_, units_, edge_);
+  std::vector<int> slot(walls_.size(), -1);
+  for (size_t w = 0; w < walls_.size(); ++w)
+    if (wall_moves_.size() > w && wall_moves_[w]) slot[w] = lat.add_wall_motion(lattice_motion(walls_[w]->motion()));
+  for (int k = 0; k < edge_; ++k)
+    for (int j = 0; j < edge_; ++j)
+      for (int i = 0; i < edge_; ++i) {
+        const int w = owner_[lat.index(i, j, k)];
+        if (w < 0) continue;
+        if (slot[w] >= 0)
+          lat.set_moving_wall(i, j, k, slot[w]);
+        else
+          lat.set_wall(i, j, k);
+      }
+  lbm::Fields old;
+  if (carry_flow && solver_) old = solver_->fields();
+  const auto was_wall = [&](std::size_t c) {
+    return lbm::is_wall(static_cast<lbm::CellType>(solver_->lattice().types()[c] & ~lbm::kGeneralBit));
+  };
+  std::vector<float> rho, u;
+  if (!old.rho.empty()) {
+    rho = old.rho;
+    u = old.u;
+    // Refill the cells that were walls, front by front: a cell takes the mean state of its neighbours
+    // known so far (fluid before, or refilled in an earlier pass), so a body that moved by several
+    // cells at once is filled from the fluid inwards. Cells still inside a wall are filled too
+    // (their values are unused).
+    std::vector<char> known(old.rho.size());
+    std::vector<std::size_t> todo;
+    for (std::size_t c = 0; c < known.size(); ++c) {
+      known[c] = !was_wall(c);
+      if (!known[c]) todo.push_back(c);
+    }
+    while (!todo.empty()) {
+      std::vector<std::size_t> filled, left;
+      for (std::size_t c : todo) {
+        const int i = static_cast<int>(c % edge_), j = static_cast<int>((c / edge_) % edge_);
+        const int k = static_cast<int>(c / (static_cast<std::size_t>(edge_) * edge_));
+        double r = 0, n = 0;
+        Vec3 v = Vec3::Zero();
+        for (int q = 1; q < lbm::d3q19::Q; ++q) {
+          const int a = i + lbm::d3q19::cx(q), b = j + lbm::d3q19::cy(q), e = k + lbm::d3q19::cz(q);
+          if (a < 0 || b < 0 || e < 0 || a >= edge_ || b >= edge_ || e >= edge_) continue;
+          const std::size_t nb = lat.index(a, b, e);
+          if (!known[nb]) continue;
+          r += rho[nb];
+          v += Vec3(u[3 * nb], u[3 * nb + 1], u[3 * nb + 2]);
+          ++n;
+        }
+        if (n == 0) {
+          left.push_back(c);
+          continue;
+        }
+        rho[c] = static_cast<float>(r / n);
+        for (int d = 0; d < 3; ++d) u[3 * c + d] = static_cast<float>(v[d] / n);
+        filled.push_back(c);
+      }
+      if (filled.empty()) break;  // no fluid at all: leave the rest at rest
+      for (std::size_t c : filled) known[c] = 1;
+      todo.swap(left);
+    }
+    for (std::size_t c : todo) {
+      rho[c] = 1.0f;
+      u[3 * c] = u[3 * c + 1] = u[3 * c + 2] = 0.0f;
+    }
+  }
+  solver_ = lbm::make_solver(std::move(lat), cfg_.backend);
+  if (!disk_forces_.empty()) solver_->set_cell_forces(disk_cells_, disk_forces_);
+  if (motion_set_) {
+    motion_set_ = false;  // push the faces and the frame forces to the new solver
+    set_motion(motion_);
+  }
+  // after the faces: the carried state is the reference the impedance outlets start from
+  if (!rho.empty())
+    solver_->initialize(rho, u);
+  else
+    solver_->initialize({}, {});
 }
 
 Vec3 LrmDomain::position(int i, int j, int k) const { return Vec3(i - centre_, j - centre_, k - centre_) * units_.dx(); }
@@ -127,6 +268,7 @@ void LrmDomain::set_rotor_forces(const rotor::RotorForceHarmonics& h) {
   for (size_t k = 0; k < forces.size(); ++k)
     for (int d = 0; d < 3; ++d) f[3 * k + d] = static_cast<float>(units_.to_lattice_force_density(-forces[k][d] / volume));
   solver_->set_cell_forces(disk_cells_, f);
+  disk_forces_ = std::move(f);
 }
 
 void LrmDomain::step(long n) {

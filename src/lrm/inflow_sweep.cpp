@@ -12,13 +12,30 @@ namespace ship_lrm::lrm {
 IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotorCase& c) {
   if (!(c.settle >= 0) || !(c.average > 0)) throw lbm::ConfigError("isolated rotor: needs settle >= 0 s and average > 0 s");
   if (!(c.thrust > 0)) throw lbm::ConfigError("isolated rotor: needs a thrust > 0 N");
+  IsolatedRotorResult r;
+  if (!(c.ground_height >= 0)) throw lbm::ConfigError("isolated rotor: the ground height must be >= 0 m (0: no ground)");
   LrmDomain d(cfg);
   d.set_stream(rotor::Vec3(-c.speed, 0, 0));
+  if (c.fuselage) d.add_wall(std::make_shared<Fuselage>());
+  if (c.ground_height > 0) {
+    const double half = 0.5 * (d.cells_per_edge() - 1) * d.units().dx();
+    if (c.ground_height > half - 3 * d.units().dx())
+      throw lbm::ConfigError("isolated rotor: a ground " + std::to_string(c.ground_height) + " m below the hub lies outside the domain (" +
+                             std::to_string(half) + " m to the bottom face); raise the reach a or lower the height");
+    auto ground = std::make_shared<GroundPlane>(c.ground_height);
+    RigidMotion m;
+    m.velocity = rotor::Vec3(-c.speed, 0, 0);  // the ground passes under the rotor at the flight speed
+    ground->set_motion(m);
+    d.add_wall(ground);
+    // first wall cell below the hub: cell centres k with (k - centre) dx > height
+    const double centre = 0.5 * (d.cells_per_edge() - 1);
+    const double k0 = std::floor(centre + c.ground_height / d.units().dx()) + 1.0;
+    r.ground_effective_height = (k0 - 0.5 - centre) * d.units().dx();
+  }
   d.restart_flow();
   rotor::RotorForceHarmonics h;
   h.cos[0] = rotor::Vec3(0, 0, -c.thrust);
   d.set_rotor_forces(h);
-  IsolatedRotorResult r;
   r.cells_per_edge = d.cells_per_edge();
   const auto t0 = std::chrono::steady_clock::now();
   const long settle = static_cast<long>(std::ceil(c.settle / d.time_step()));
@@ -48,5 +65,13 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
   r.momentum_theory = rotor::glauert_induced_velocity(c.thrust, cfg.density, cfg.radius, c.speed);
   return r;
 }
+
+double cheeseman_bennett_ratio(double z_over_R, double speed, double induced_velocity) {
+  const double g = 1.0 / (16.0 * z_over_R * z_over_R);
+  const double q = induced_velocity > 0 ? speed / induced_velocity : 0.0;
+  return 1.0 - g / (1.0 + q * q);
+}
+
+double hayden_ratio(double z_over_R) { return 1.0 / (0.9926 + 0.0379 * 4.0 / (z_over_R * z_over_R)); }
 
 }  // namespace ship_lrm::lrm

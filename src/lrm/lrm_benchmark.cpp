@@ -4,9 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <thread>
 
 #include "ship_lrm/flight/trim.hpp"
 #include "ship_lrm/lrm/lrm_inflow.hpp"
+#include "ship_lrm/lrm/realtime_inflow.hpp"
 
 namespace ship_lrm::lrm {
 
@@ -15,7 +17,11 @@ std::string LrmBenchmarkResult::to_json() const {
   os << "{\"benchmark\": \"lrm\", \"backend\": \"" << backend << "\", \"N\": " << nodes << ", \"reach\": " << reach
      << ", \"cells_per_edge\": " << cells_per_edge << ", \"cells\": " << cells << ", \"flight_steps\": " << flight_steps
      << ", \"lbm_steps\": " << lbm_steps << ", \"simulated_s\": " << simulated_seconds << ", \"wall_s\": " << wall_seconds
-     << ", \"clock_over_sim\": " << clock_over_sim << ", \"mlups\": " << mlups << "}";
+     << ", \"clock_over_sim\": " << clock_over_sim << ", \"mlups\": " << mlups;
+  if (realtime)
+    os << ", \"realtime\": true, \"deadline_misses\": " << deadline_misses << ", \"miss_fraction\": " << miss_fraction
+       << ", \"worst_wait_s\": " << worst_wait_s << ", \"worst_step_s\": " << worst_step_s;
+  os << "}";
   return os.str();
 }
 
@@ -52,6 +58,57 @@ LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, cons
   r.lbm_steps = lrm->lbm_steps() - lbm0;
   r.simulated_seconds = steps * heli.time_step();
   r.clock_over_sim = r.wall_seconds / r.simulated_seconds;
+  r.mlups = static_cast<double>(r.cells) * r.lbm_steps / r.wall_seconds / 1e6;
+  return r;
+}
+
+LrmBenchmarkResult run_realtime_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg_in, double seconds, double speed,
+                                          double warm_up) {
+  if (!(seconds > 0)) throw lbm::ConfigError("lrm benchmark: needs seconds > 0");
+  LrmConfig cfg = cfg_in;
+  cfg.radius = p.main_rotor.radius;
+  cfg.density = p.density;
+  flight::Helicopter pp(p);
+  flight::TrimTarget t;
+  t.speed = speed;
+  const flight::TrimResult trim = flight::trim(pp, t);
+  if (!trim.converged) throw std::runtime_error(trim.message);
+  auto inflow = std::make_unique<RealTimeLrmInflow>(cfg, warm_up, 1.0);
+  RealTimeLrmInflow* rt = inflow.get();
+  flight::Helicopter heli(p, std::move(inflow), flight::EngineMode::ConstantSpeed);
+  heli.set_controls(trim.controls);
+  heli.set_body_held(true);
+  heli.reset(trim.body);  // LRM warm-up, synchronous, not timed
+  LrmBenchmarkResult r;
+  r.realtime = true;
+  r.backend = rt->lrm().domain().solver().backend_name();
+  r.nodes = cfg.nodes;
+  r.reach = cfg.reach;
+  r.cells_per_edge = rt->lrm().domain().cells_per_edge();
+  r.cells = static_cast<long>(rt->lrm().domain().solver().lattice().cells());
+  const long lbm0 = rt->lrm().lbm_steps();
+  const long steps = static_cast<long>(std::ceil(seconds / heli.time_step()));
+  using clock = std::chrono::steady_clock;
+  const auto dt = std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(heli.time_step()));
+  const auto t0 = clock::now();
+  for (long i = 0; i < steps; ++i) {
+    const auto due = t0 + (i + 1) * dt;
+    rt->set_deadline(due);
+    const auto s0 = clock::now();
+    heli.step();
+    r.worst_step_s = std::max(r.worst_step_s, std::chrono::duration<double>(clock::now() - s0).count());
+    std::this_thread::sleep_until(due);  // paced: the next step starts on time (or at once when late)
+  }
+  r.wall_seconds = std::chrono::duration<double>(clock::now() - t0).count();
+  const RealTimeStats st = rt->stats();
+  r.flight_steps = steps;
+  r.simulated_seconds = steps * heli.time_step();
+  r.clock_over_sim = r.wall_seconds / r.simulated_seconds;
+  r.deadline_misses = st.deadline_misses;
+  r.miss_fraction = st.miss_fraction();
+  r.worst_wait_s = st.worst_wait_s;
+  rt->reset(heli.disk_state());  // waits for the LRM thread, so its step count is final
+  r.lbm_steps = rt->lrm().lbm_steps() - lbm0;
   r.mlups = static_cast<double>(r.cells) * r.lbm_steps / r.wall_seconds / 1e6;
   return r;
 }

@@ -48,7 +48,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
     std::string backend = "auto";
     int nodes = 64;
     double reach = 1.25, seconds = 2, speed = 25, warm_up = 0.5;
-    bool json = false;
+    bool json = false, realtime = false;
   };
   auto lo = std::make_shared<LrmOpts>();
   lrm_cmd->add_option("--backend", lo->backend, "cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
@@ -58,6 +58,9 @@ std::function<int()> add_bench_command(CLI::App& app) {
   lrm_cmd->add_option("--speed", lo->speed, "trimmed speed, m/s")->check(CLI::Range(0.0, 40.0))->capture_default_str();
   lrm_cmd->add_option("--warm-up", lo->warm_up, "simulated seconds before timing")->check(CLI::Range(0.0, 600.0))->capture_default_str();
   lrm_cmd->add_flag("--json", lo->json, "print one JSON object");
+  lrm_cmd->add_flag("--realtime", lo->realtime,
+                    "pace the run to the wall clock with firm deadlines (LRM in its own thread, Pitt-Peters for late steps): "
+                    "counts deadline misses");
 #endif
   return [o, lbm
 #ifdef SHIP_LRM_HAVE_FLIGHT
@@ -71,13 +74,20 @@ std::function<int()> add_bench_command(CLI::App& app) {
       c.nodes = lo->nodes;
       c.reach = lo->reach;
       c.backend = lbm::parse_backend(lo->backend);
-      const auto r = lrm::run_lrm_benchmark(flight::load_default_bo105(), c, lo->seconds, lo->speed, lo->warm_up);
-      if (lo->json)
+      const auto p = flight::load_default_bo105();
+      const auto r = lo->realtime ? lrm::run_realtime_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up)
+                                  : lrm::run_lrm_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up);
+      if (lo->json) {
         std::cout << r.to_json() << std::endl;
-      else
+      } else {
         std::cout << std::fixed << std::setprecision(3) << "coupled LRM step, " << r.backend << ", N = " << r.nodes << ", a = " << r.reach
                   << " (" << r.cells_per_edge << "^3 cells): t_clock / t_sim = " << r.clock_over_sim << ", " << std::setprecision(1)
                   << r.mlups << " MLUPS\n";
+        if (r.realtime)
+          std::cout << std::setprecision(2) << "paced real time: " << r.deadline_misses << " of " << r.flight_steps
+                    << " steps missed their deadline (" << 100.0 * r.miss_fraction << " %), Pitt-Peters served them; worst on-time wait "
+                    << 1e3 * r.worst_wait_s << " ms\n";
+      }
       return 0;
     }
     if (flight->parsed()) {

@@ -7,11 +7,125 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "ship_lrm/lbm/lattice.hpp"
 #include "ship_lrm/lrm/inflow_sweep.hpp"
 #include "ship_lrm/rotor/momentum_theory.hpp"
 
 namespace ship_lrm::tools {
 namespace fs = std::filesystem;
+
+namespace {
+
+// Face set-ups of the LRM domain for the ground-effect study (issue 4, acceptance 4).
+std::array<lbm::FaceType, 6> faces_named(const std::string& name) {
+  lrm::LrmConfig c;
+  if (name == "thesis") return c.faces;  // velocity front, left, right; impedance back, top, bottom
+  if (name == "open") {                  // impedance on all six (the author's earlier set-up, thesis 8.2.3)
+    c.faces.fill(lbm::FaceType::ImpedanceOutlet);
+    return c.faces;
+  }
+  if (name == "open-sides") {  // velocity front only: the wall jet may leave sideways
+    c.faces[2] = c.faces[3] = lbm::FaceType::ImpedanceOutlet;
+    return c.faces;
+  }
+  throw lbm::ConfigError("unknown face set-up '" + name + "' (thesis, open-sides or open)");
+}
+
+std::vector<double> parse_list(const std::string& text) { return parse_speeds(text); }
+
+std::function<int()> add_ground_sweep(CLI::App& sweep) {
+  auto* ground = sweep.add_subcommand(
+      "ground",
+      "Isolated rotor above a ground plane: v_mean / v_mean(out of ground effect) against Cheeseman-Bennett and Hayden (thesis 8.2.3)");
+  struct Opts {
+    std::string mode = "hover", heights, speeds = "0,3,6,9,12,15", faces = "thesis", backend = "auto", out;
+    int nodes = 64;
+    double reach = 1.25, thrust = 24525, settle = 4, average = 2;
+    bool overwrite = false, no_plot = false;
+  };
+  auto o = std::make_shared<Opts>();
+  ground->add_option("--mode", o->mode, "hover (heights swept) or forward (speeds swept at each height)")
+      ->check(CLI::IsMember({"hover", "forward"}))
+      ->capture_default_str();
+  ground->add_option("--heights", o->heights,
+                     "hub height over ground z/R: a comma list or start:step:stop (default hover 0.5,0.6,0.7,0.8,1,1.25,1.5,2; "
+                     "forward 0.5,0.6,0.8,1)");
+  ground->add_option("--speeds", o->speeds, "forward mode: speeds in m/s")->capture_default_str();
+  ground->add_option("--faces", o->faces, "face set-up: thesis (velocity front/sides), open-sides, open (impedance everywhere)")
+      ->check(CLI::IsMember({"thesis", "open-sides", "open"}))
+      ->capture_default_str();
+  ground->add_option("--N", o->nodes, "lattice nodes per 4R")->check(CLI::Range(16, 512))->capture_default_str();
+  ground->add_option("--reach", o->reach, "domain edge / 4R (a >= 1)")->check(CLI::Range(1.0, 8.0))->capture_default_str();
+  ground->add_option("--thrust", o->thrust, "N, uniform over the disk")->check(CLI::Range(1.0, 1e6))->capture_default_str();
+  ground->add_option("--settle", o->settle, "s simulated before averaging")->check(CLI::Range(0.0, 600.0))->capture_default_str();
+  ground->add_option("--average", o->average, "s averaged")->check(CLI::Range(0.01, 600.0))->capture_default_str();
+  ground->add_option("--backend", o->backend, "cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
+  ground->add_option("--out", o->out, "output directory (ground_sweep.csv, .png)")->required();
+  ground->add_flag("--overwrite", o->overwrite, "replace existing output files");
+  ground->add_flag("--no-plot", o->no_plot, "write the CSV only");
+  return [o, ground]() -> int {
+    if (!ground->parsed()) return -1;
+    const bool hover = o->mode == "hover";
+    const auto heights = parse_list(o->heights.empty() ? (hover ? "0.5,0.6,0.7,0.8,1,1.25,1.5,2" : "0.5,0.6,0.8,1") : o->heights);
+    const auto speeds = hover ? std::vector<double>{0.0} : parse_speeds(o->speeds);
+    for (double h : heights)
+      if (!(h > 0)) throw lbm::ConfigError("--heights: z/R must be > 0, got " + std::to_string(h));
+    lrm::LrmConfig cfg;
+    cfg.nodes = o->nodes;
+    cfg.reach = o->reach;
+    cfg.faces = faces_named(o->faces);
+    cfg.backend = lbm::parse_backend(o->backend);
+    const fs::path dir(o->out);
+    prepare_output(dir, {"ground_sweep.csv", "ground_sweep.png"}, o->overwrite);
+    const auto case_for = [&](double v, double z_over_R) {
+      lrm::IsolatedRotorCase c;
+      c.speed = v;
+      c.thrust = o->thrust;
+      c.settle = o->settle;
+      c.average = o->average;
+      c.ground_height = z_over_R * cfg.radius;  // 0: out of ground effect
+      return c;
+    };
+    for (double v : speeds) {  // every set-up checked before any long run
+      lrm::LrmDomain probe(lrm::config_for_stream(cfg, v));
+      probe.set_stream(rotor::Vec3(-v, 0, 0));
+      const double half = 0.5 * (probe.cells_per_edge() - 1) * probe.units().dx();
+      for (double h : heights)
+        if (h * cfg.radius > half - 3 * probe.units().dx())
+          throw lbm::ConfigError("--heights: z/R = " + std::to_string(h) +
+                                 " puts the ground outside the domain at a = " + std::to_string(cfg.reach) + "; raise --reach");
+    }
+    std::ofstream csv(dir / "ground_sweep.csv");
+    csv << "mode,speed_m_s,z_over_R,z_effective_over_R,lrm_mean_m_s,lrm_mean_oge_m_s,ratio,cheeseman_bennett,hayden,"
+           "momentum_theory_oge_m_s,faces,N,reach,steps,wall_s\n";
+    for (double v : speeds) {
+      const auto run_cfg = lrm::config_for_stream(cfg, v);
+      const auto oge = lrm::run_isolated_rotor(run_cfg, case_for(v, 0));
+      const double vi = rotor::glauert_induced_velocity(o->thrust, cfg.density, cfg.radius, v);
+      std::cout << std::fixed << std::setprecision(3) << "V = " << v << " m/s, out of ground effect: v_mean " << oge.induced_mean
+                << " m/s (momentum theory " << vi << ")\n";
+      for (double h : heights) {
+        const auto r = lrm::run_isolated_rotor(run_cfg, case_for(v, h));
+        const double ratio = r.induced_mean / oge.induced_mean;
+        const double cb = lrm::cheeseman_bennett_ratio(h, v, vi);
+        std::cout << "  z/R = " << h << ": v_mean " << r.induced_mean << " m/s, ratio " << ratio << " (Cheeseman-Bennett " << cb;
+        if (hover) std::cout << ", Hayden " << lrm::hayden_ratio(h);
+        std::cout << "); " << r.steps << " steps in " << std::setprecision(1) << r.wall_seconds << " s\n" << std::setprecision(3);
+        csv << std::setprecision(6) << o->mode << "," << v << "," << h << "," << r.ground_effective_height / cfg.radius << ","
+            << r.induced_mean << "," << oge.induced_mean << "," << ratio << "," << cb << ",";
+        if (hover) csv << lrm::hayden_ratio(h);
+        csv << "," << vi << "," << o->faces << "," << cfg.nodes << "," << cfg.reach << "," << r.steps << "," << r.wall_seconds << "\n";
+        csv.flush();
+      }
+    }
+    csv.close();
+    std::cout << "wrote " << (dir / "ground_sweep.csv").string() << "\n";
+    if (!o->no_plot) plot("sweep_ground", dir / "ground_sweep.csv", dir / "ground_sweep.png", "");
+    return 0;
+  };
+}
+
+}  // namespace
 
 std::function<int()> add_sweep_command(CLI::App& app) {
   auto* sweep = app.add_subcommand("sweep", "Parameter sweeps of the LRM domain");
@@ -35,8 +149,9 @@ std::function<int()> add_sweep_command(CLI::App& app) {
   inflow->add_option("--out", o->out, "output directory (inflow_sweep.csv, .png)")->required();
   inflow->add_flag("--overwrite", o->overwrite, "replace existing output files");
   inflow->add_flag("--no-plot", o->no_plot, "write the CSV only");
-  return [o, inflow]() -> int {
-    if (!inflow->parsed()) return -1;
+  auto run_ground = add_ground_sweep(*sweep);
+  return [o, inflow, run_ground]() -> int {
+    if (!inflow->parsed()) return run_ground();
     const auto speeds = parse_speeds(o->speeds);
     lrm::LrmConfig cfg;
     cfg.nodes = o->nodes;

@@ -20,6 +20,7 @@
 
 #include "ship_lrm/lbm/solver.hpp"
 #include "ship_lrm/lbm/units.hpp"
+#include "ship_lrm/lrm/walls.hpp"
 #include "ship_lrm/rotor/disk_coupling.hpp"
 #include "ship_lrm/rotor/inflow_model.hpp"
 
@@ -77,6 +78,20 @@ class LrmDomain {
   // An impulsive start from rest instead sends a compression wave through the domain that the
   // non-reflecting outlets let out without restoring the density (no reference pressure).
   void restart_flow();
+  // Solid bodies (walls.hpp): the ground, a ship deck, the fuselage. Adding one, or update_walls()
+  // after one moved, re-voxelises the domain: cells whose centre lies inside become no-slip walls
+  // (halfway bounce-back), moving with the body (Ladd's moving-wall term). The solid continues
+  // through the outer layers to the faces. Issue 4 asked to keep walls out of the two outermost
+  // layers, but the fluid left there under a ground plane is a dead end fed by the faces, and it went
+  // unstable. When the set of wall cells changed, the flow carries over to the new lattice at
+  // equilibrium with each cell's density and velocity. Cells that left a body are refilled with the
+  // mean state of their fluid neighbours, the usual refill of moving-boundary LBM (e.g. Lallemand &
+  // Luo 2003, J. Comput. Phys. 184, 406). Throws lbm::ConfigError when a body covers a rotor-disk
+  // cell; the domain then stays as it was.
+  void add_wall(std::shared_ptr<WallSurface> wall);
+  void update_walls();
+  std::size_t wall_cells() const { return wall_cells_; }
+  std::size_t rebuilds() const { return rebuilds_; }  // lattice rebuilds after the first (moving walls)
   // Aerodynamic force on the blades over azimuth (N, mr axes); the fluid gets the opposite.
   void set_rotor_forces(const rotor::RotorForceHarmonics& h);
   // Advance by whole LBM steps (at least one).
@@ -96,6 +111,13 @@ class LrmDomain {
   long steps_ = 0;
   Motion motion_;
   bool motion_set_ = false;
+  std::vector<std::shared_ptr<WallSurface>> walls_;
+  std::vector<std::int16_t> owner_;  // per cell: index of the wall that holds it, or -1
+  std::vector<bool> wall_moves_;     // per wall: built as a moving wall
+  std::size_t wall_cells_ = 0, rebuilds_ = 0;
+  std::vector<float> disk_forces_;  // lattice force densities of the disk cells (kept across rebuilds)
+  void rebuild(bool carry_flow);
+  lbm::WallMotion lattice_motion(const RigidMotion& m) const;
 };
 
 }  // namespace ship_lrm::lrm

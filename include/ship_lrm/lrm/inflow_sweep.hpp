@@ -1,5 +1,6 @@
-// Isolated rotor in the LRM domain (thesis 8.1): a uniformly loaded disk at zero incidence in a
-// stream, its time-averaged inflow against Pitt-Peters / momentum theory.
+// Isolated rotor in the LRM domain (thesis 8.1, 8.2.3): a uniformly loaded disk at zero incidence in
+// a stream, optionally above a ground plane, its time-averaged inflow against Pitt-Peters / momentum
+// theory and the algebraic ground-effect models.
 #pragma once
 
 #include "ship_lrm/lrm/domain.hpp"
@@ -12,7 +13,17 @@ struct IsolatedRotorCase {
   double settle = 4.0;        // s simulated before averaging
   double average = 2.0;       // s averaged
   double rotor_speed = 44.4;  // rad/s, only to non-dimensionalise the Pitt-Peters reference
+  double ground_height = 0;   // m from the hub down to a ground plane moving at the stream; 0: none
+  bool fuselage = false;      // a Bo 105-like fuselage (walls.hpp) below the disk
 };
+
+// Algebraic ground-effect models at equal thrust, induced velocity in / out of ground effect for the
+// rotor at height z over the ground (REFERENCE.md; thesis figs. 8.9-8.11):
+// Cheeseman & Bennett 1955 (ARC R&M 3021), with its forward-flight form (Johnson, Rotorcraft
+// Aeromechanics, 2013, sec. 5.5.1): 1 - (R/4z)^2 / (1 + (V/v_i)^2), v_i the induced velocity out of
+// ground effect; Hayden 1976 (J. AHS 21(3)), a power ratio: 1 / (0.9926 + 0.0379 (2R/z)^2).
+double cheeseman_bennett_ratio(double z_over_R, double speed, double induced_velocity);
+double hayden_ratio(double z_over_R);
 
 struct IsolatedRotorResult {
   rotor::RotorInflow inflow;                            // time average, m/s (relative to the domain)
@@ -22,6 +33,7 @@ struct IsolatedRotorResult {
   long steps = 0;
   double wall_seconds = 0, simulated_seconds = 0;
   int cells_per_edge = 0;
+  double ground_effective_height = 0;  // m: the bounce-back wall lies half-way between fluid and wall cells
 };
 
 IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotorCase& c);

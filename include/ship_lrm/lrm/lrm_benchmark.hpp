@@ -16,6 +16,10 @@ struct LrmBenchmarkResult {
   double simulated_seconds = 0, wall_seconds = 0;
   double clock_over_sim = 0;  // t_clock / t_sim (thesis 8.3.1; < 1 is real time)
   double mlups = 0;           // million lattice updates per second
+  // paced wall-clock run (run_realtime_benchmark): firm deadlines, Pitt-Peters fallback
+  bool realtime = false;
+  long deadline_misses = 0;
+  double miss_fraction = 0, worst_wait_s = 0, worst_step_s = 0;
   std::string to_json() const;
 };
 
@@ -23,5 +27,10 @@ struct LrmBenchmarkResult {
 // held at the trim) for `seconds` of simulated time after `warm_up` seconds that are not timed.
 LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg, double seconds, double speed,
                                      double warm_up);
+
+// The same coupled step paced to the wall clock (RealTimeLrmInflow): each flight-model step is due at
+// t0 + k dt; the LRM inflow that misses that deadline is replaced by Pitt-Peters and counted.
+LrmBenchmarkResult run_realtime_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg, double seconds, double speed,
+                                          double warm_up);
 
 }  // namespace ship_lrm::lrm

@@ -1,0 +1,74 @@
+// Wall-clock real-time mode of the LRM inflow (issue 4; ARCHITECTURE.md "Real time"): the LRM domain
+// runs in its own thread while the flight model keeps its pace. Every coupling step posts the rotor
+// state to the LRM thread and waits for that step's inflow until a firm deadline. An inflow that
+// comes late is dropped and counted; that step uses the Pitt-Peters inflow, which runs alongside at
+// every step so that its state is always current. A late result is never served, not even one step
+// later. While the LRM thread is still busy, the newest state and the time missed accumulate, and
+// the next job covers them (LrmInflow advances whole LBM steps up to the flight model's time).
+//
+// Simulated-time runs (deterministic) use LrmInflow directly; this class is for paced runs.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "ship_lrm/lrm/lrm_inflow.hpp"
+#include "ship_lrm/rotor/pitt_peters.hpp"
+
+namespace ship_lrm::lrm {
+
+struct RealTimeStats {
+  long steps = 0;            // coupling steps served
+  long deadline_misses = 0;  // steps served by the Pitt-Peters fallback
+  long lrm_jobs = 0;         // jobs the LRM thread finished
+  double worst_wait_s = 0;   // longest wait for a result that made its deadline
+  bool last_was_fallback = false;
+  double miss_fraction() const { return steps > 0 ? static_cast<double>(deadline_misses) / steps : 0.0; }
+};
+
+class RealTimeLrmInflow final : public rotor::InflowModel {
+ public:
+  // budget: wall-clock seconds a coupling step may wait for its LRM inflow after posting the state.
+  RealTimeLrmInflow(const LrmConfig& cfg, double warm_up, double budget);
+  ~RealTimeLrmInflow() override;
+  std::string name() const override { return "lrm-realtime"; }
+  // Synchronous: starts (or keeps) the LRM flow and its warm-up, and the Pitt-Peters fallback.
+  void reset(const rotor::RotorDiskState& state) override;
+  void advance(const rotor::RotorDiskState& state, double dt) override;
+  rotor::RotorInflow inflow() const override { return served_; }
+  bool needs_harmonics() const override { return true; }
+
+  RealTimeStats stats() const;
+  void set_budget(double seconds) { budget_ = std::chrono::duration<double>(seconds); }
+  // A paced loop gives each step an absolute deadline instead (the wall-clock time the step is due);
+  // a default time_point returns to the budget.
+  void set_deadline(std::chrono::steady_clock::time_point t) { deadline_ = t; }
+  // The LRM model itself; only while the LRM thread is idle (after reset, or in tests).
+  LrmInflow& lrm() { return *lrm_; }
+
+ private:
+  void worker();
+  std::unique_ptr<LrmInflow> lrm_;
+  rotor::PittPetersInflow fallback_;
+  std::chrono::duration<double> budget_;
+  rotor::RotorInflow served_;
+  RealTimeStats stats_;
+
+  std::chrono::steady_clock::time_point deadline_{};
+  mutable std::mutex mutex_;
+  std::condition_variable job_ready_, result_ready_;
+  bool stop_ = false, busy_ = false, has_job_ = false;
+  long job_id_ = 0, result_id_ = -1;
+  rotor::RotorDiskState job_state_;
+  double job_dt_ = 0;
+  rotor::RotorInflow result_;
+  std::exception_ptr error_;
+  // time and state not yet handed to the LRM thread (it was busy)
+  double pending_dt_ = 0;
+  std::thread thread_;
+};
+
+}  // namespace ship_lrm::lrm

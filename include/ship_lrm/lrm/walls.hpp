@@ -1,0 +1,74 @@
+// Solid bodies in the LRM domain, described by signed distance (issue 4; ARCHITECTURE.md "Moving the
+// domain"): the ground or a ship deck, which move relative to the domain, and the fuselage, which is
+// fixed to it. The domain voxelises them: a cell whose centre lies inside (distance < 0) becomes a
+// no-slip wall with halfway bounce-back (Ladd 1994), moving with the body's rigid motion.
+#pragma once
+
+#include <string>
+
+#include "ship_lrm/rotor/inflow_model.hpp"
+
+namespace ship_lrm::lrm {
+
+using rotor::Vec3;
+
+// Rigid-body velocity field of a solid relative to the domain: u(r) = velocity + omega x r, with r
+// from the hub (mr axes, m/s, rad/s).
+struct RigidMotion {
+  Vec3 velocity = Vec3::Zero();
+  Vec3 omega = Vec3::Zero();
+};
+
+class WallSurface {
+ public:
+  virtual ~WallSurface() = default;
+  virtual std::string name() const = 0;
+  // Signed distance (m) from p (m, mr axes, from the hub) to the surface; negative inside the solid.
+  virtual double signed_distance(const Vec3& p) const = 0;
+  // Motion relative to the domain; a body fixed to the rotorcraft (the fuselage) has none.
+  virtual RigidMotion motion() const { return {}; }
+};
+
+// Flat ground (or sea, or a deck larger than the domain): the solid half-space more than `height`
+// below the hub along the unit vector `down` (mr axes; +z when the rotor is level).
+class GroundPlane final : public WallSurface {
+ public:
+  explicit GroundPlane(double height, const Vec3& down = Vec3::UnitZ());
+  std::string name() const override { return "ground"; }
+  double signed_distance(const Vec3& p) const override { return height_ - p.dot(down_); }
+  RigidMotion motion() const override { return motion_; }
+  // New pose (a climbing or pitching rotorcraft) and motion relative to the domain: for ground at rest
+  // in the world, velocity = -hub velocity over ground and omega = -(the domain's angular velocity).
+  void set_pose(double height, const Vec3& down);
+  void set_motion(const RigidMotion& m) { motion_ = m; }
+  double height() const { return height_; }
+
+ private:
+  double height_;
+  Vec3 down_;
+  RigidMotion motion_;
+};
+
+// A Bo 105-like fuselage fixed to the domain: an ellipsoidal cabin below the hub and a tail boom
+// (a capsule) to the tail rotor. Dimensions are estimates from the published overall data
+// (fuselage length 8.56 m, width 1.58 m, hub 1.49 m above the cg: thesis table 6.5, Padfield
+// appendix 4B); see docs/design.md.
+class Fuselage final : public WallSurface {
+ public:
+  struct Shape {
+    Vec3 cabin_centre{0.25, 0.0, 1.55};     // m from the hub, mr axes [EST]
+    Vec3 cabin_semi_axes{2.2, 0.79, 0.75};  // m: length 4.4, width 1.58 [EST from the 1.58 m width]
+    Vec3 boom_start{-1.6, 0.0, 1.25};       // m from the hub [EST]
+    Vec3 boom_end{-6.0, 0.0, 0.0};          // tail rotor hub, 6.0 m aft of and 0.23 m below the main hub [P4B]
+    double boom_radius = 0.35;              // m [EST]
+  };
+  Fuselage() : Fuselage(Shape{}) {}
+  explicit Fuselage(const Shape& s) : s_(s) {}
+  std::string name() const override { return "fuselage"; }
+  double signed_distance(const Vec3& p) const override;
+
+ private:
+  Shape s_;
+};
+
+}  // namespace ship_lrm::lrm

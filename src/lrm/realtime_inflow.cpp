@@ -1,0 +1,102 @@
+// Real-time LRM inflow with firm deadlines and Pitt-Peters fallback (see realtime_inflow.hpp).
+#include "ship_lrm/lrm/realtime_inflow.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace ship_lrm::lrm {
+
+RealTimeLrmInflow::RealTimeLrmInflow(const LrmConfig& cfg, double warm_up, double budget)
+    : lrm_(std::make_unique<LrmInflow>(cfg, warm_up)), budget_(budget) {
+  if (!(budget > 0)) throw lbm::ConfigError("real-time LRM: the deadline budget must be > 0 s");
+  thread_ = std::thread([this] { worker(); });
+}
+
+RealTimeLrmInflow::~RealTimeLrmInflow() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  job_ready_.notify_all();
+  thread_.join();
+}
+
+void RealTimeLrmInflow::worker() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  for (;;) {
+    job_ready_.wait(lock, [this] { return stop_ || has_job_; });
+    if (stop_) return;
+    const rotor::RotorDiskState state = job_state_;
+    const double dt = job_dt_;
+    const long id = job_id_;
+    has_job_ = false;
+    busy_ = true;
+    lock.unlock();
+    rotor::RotorInflow out;
+    std::exception_ptr err;
+    try {
+      lrm_->advance(state, dt);
+      out = lrm_->inflow();
+    } catch (...) {
+      err = std::current_exception();
+    }
+    lock.lock();
+    busy_ = false;
+    ++stats_.lrm_jobs;
+    result_ = out;
+    result_id_ = id;
+    if (err) error_ = err;
+    result_ready_.notify_all();
+  }
+}
+
+RealTimeStats RealTimeLrmInflow::stats() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return stats_;
+}
+
+void RealTimeLrmInflow::reset(const rotor::RotorDiskState& state) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  result_ready_.wait(lock, [this] { return !busy_ && !has_job_; });  // the LRM thread is idle
+  lrm_->reset(state);
+  fallback_.reset(state);
+  served_ = lrm_->inflow();
+  pending_dt_ = 0;
+}
+
+void RealTimeLrmInflow::advance(const rotor::RotorDiskState& state, double dt) {
+  fallback_.advance(state, dt);  // always current, whatever the LRM thread does
+  std::unique_lock<std::mutex> lock(mutex_);
+  ++stats_.steps;
+  if (error_) std::rethrow_exception(error_);
+  pending_dt_ += dt;
+  if (busy_ || has_job_) {  // still working on an earlier step: this one cannot make it
+    ++stats_.deadline_misses;
+    stats_.last_was_fallback = true;
+    served_ = fallback_.inflow();
+    return;
+  }
+  job_state_ = state;
+  job_dt_ = pending_dt_;
+  pending_dt_ = 0;
+  const long id = ++job_id_;
+  has_job_ = true;
+  job_ready_.notify_one();
+  const auto posted = std::chrono::steady_clock::now();
+  const auto deadline = deadline_ != std::chrono::steady_clock::time_point{}
+                            ? deadline_
+                            : posted + std::chrono::duration_cast<std::chrono::steady_clock::duration>(budget_);
+  const bool on_time = result_ready_.wait_until(lock, deadline, [&] { return result_id_ == id || error_ != nullptr; });
+  if (error_) std::rethrow_exception(error_);
+  if (on_time) {
+    served_ = result_;
+    stats_.last_was_fallback = false;
+    stats_.worst_wait_s = std::max(stats_.worst_wait_s, std::chrono::duration<double>(std::chrono::steady_clock::now() - posted).count());
+  } else {
+    ++stats_.deadline_misses;  // the result for this step will be dropped when it arrives
+    stats_.last_was_fallback = true;
+    served_ = fallback_.inflow();
+  }
+}
+
+}  // namespace ship_lrm::lrm

@@ -1,0 +1,93 @@
+// Walls in the LRM domain (issue 4): a ground plane through the signed-distance interface, moving
+// relative to the domain with moving-wall bounce-back and refill; hover in ground effect against the
+// algebraic models. Quick variants at N = 32; the sweeps run with `ship_lrm sweep ground`.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ship_lrm/lrm/inflow_sweep.hpp"
+
+using namespace ship_lrm;
+using rotor::Vec3;
+
+namespace {
+lrm::LrmConfig quick_config() {
+  lrm::LrmConfig c;
+  c.nodes = 32;
+  c.reach = 1.25;
+  c.backend = lbm::Backend::Cpu;
+  return c;
+}
+
+double worst_deviation(lrm::LrmDomain& d, const Vec3& stream) {
+  const lbm::Fields f = d.solver().fields();
+  const double scale = d.units().dx() / d.units().dt();
+  double worst = 0;
+  for (size_t c = 0; c < f.rho.size(); ++c) {
+    if (lbm::is_wall(static_cast<lbm::CellType>(d.solver().lattice().types()[c] & ~lbm::kGeneralBit))) continue;
+    const Vec3 u(f.u[3 * c] * scale, f.u[3 * c + 1] * scale, f.u[3 * c + 2] * scale);
+    EXPECT_TRUE(u.allFinite());
+    worst = std::max(worst, (u - stream).norm());
+  }
+  return worst;
+}
+}  // namespace
+
+TEST(Ground, StreamOverGroundMovingWithItStaysUniformWhileTheGroundMoves) {
+  // Forward flight over the ground without a rotor: the ground passes at the stream's speed, so the
+  // moving-wall bounce-back must not disturb the stream. Then the rotorcraft sinks by 2.5 cells and
+  // climbs back, so cells turn into walls and back into fluid: two layers at once, refilled front by
+  // front. The stream must stay uniform to 0.5 %.
+  // Known defect (docs/benchmarks.md): where the inflow face meets the moving ground an odd-even
+  // mode grows (BGK at tau - 1/2 ~ 4e-6 and no strain for Smagorinsky to act on). At 15 m/s it
+  // diverges after ~200 steps; at 5 m/s it reaches 0.9 % after 800 steps. The run here is 5 m/s and
+  // 600 steps, so the check covers the wall motion and the refill, not that corner.
+  lrm::LrmDomain d(quick_config());
+  const Vec3 stream(-5.0, 0.0, 0.0);
+  d.set_stream(stream);
+  auto ground = std::make_shared<lrm::GroundPlane>(6.0);
+  lrm::RigidMotion m;
+  m.velocity = stream;
+  ground->set_motion(m);
+  d.add_wall(ground);
+  EXPECT_GT(d.wall_cells(), 0u);
+  d.restart_flow();
+  d.step(300);
+  EXPECT_LT(worst_deviation(d, stream), 0.005 * stream.norm());
+  const std::size_t before = d.wall_cells();
+  ground->set_pose(6.0 - 2.5 * d.units().dx(), Vec3::UnitZ());
+  d.update_walls();
+  EXPECT_GT(d.wall_cells(), before);
+  EXPECT_EQ(d.rebuilds(), 2u);  // the first add_wall and this one
+  d.step(200);
+  ground->set_pose(6.0, Vec3::UnitZ());
+  d.update_walls();
+  EXPECT_EQ(d.wall_cells(), before);
+  EXPECT_LT(worst_deviation(d, stream), 0.005 * stream.norm());  // the refilled layers
+  d.step(100);
+  EXPECT_LT(worst_deviation(d, stream), 0.005 * stream.norm());
+}
+
+TEST(Ground, BadSetUpsAreRefusedBeforeAnyStep) {
+  lrm::LrmDomain d(quick_config());
+  EXPECT_THROW(d.add_wall(std::make_shared<lrm::GroundPlane>(0.0)), lbm::ConfigError);  // through the disk
+  lrm::IsolatedRotorCase c;
+  c.ground_height = 40.0;  // below the bottom face at a = 1.25 (12.3 m)
+  EXPECT_THROW(lrm::run_isolated_rotor(quick_config(), c), lbm::ConfigError);
+  EXPECT_THROW(lrm::GroundPlane(1.0, Vec3::Zero()), std::invalid_argument);
+}
+
+TEST(Ground, HoverAtHalfARadiusLiesBetweenCheesemanBennettAndHayden) {
+  // Issue 4, acceptance 4, quick variant (N = 32): the thesis' LRM matched the algebraic models for
+  // 0.5 < z/R < 0.6 (fig. 8.9); at z/R = 0.5 the ratio must lie between Hayden (0.625) and
+  // Cheeseman-Bennett (0.75). Higher above the ground the LRM still fails (docs/benchmarks.md).
+  lrm::IsolatedRotorCase c;
+  c.settle = 3.0;
+  c.average = 1.5;
+  const auto oge = lrm::run_isolated_rotor(quick_config(), c);
+  c.ground_height = 0.5 * quick_config().radius;
+  const auto ige = lrm::run_isolated_rotor(quick_config(), c);
+  const double ratio = ige.induced_mean / oge.induced_mean;
+  EXPECT_GT(ratio, lrm::hayden_ratio(0.5));
+  EXPECT_LT(ratio, lrm::cheeseman_bennett_ratio(0.5, 0.0, 1.0));
+}

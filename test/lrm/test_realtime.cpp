@@ -1,0 +1,71 @@
+// Real-time mode of the LRM inflow (issue 4, "firm deadlines"): an inflow that misses its deadline is
+// replaced by Pitt-Peters for that step and counted, never served late; one that makes it is exactly
+// the simulated-time (synchronous) result.
+#include <gtest/gtest.h>
+
+#include "ship_lrm/lrm/realtime_inflow.hpp"
+
+using namespace ship_lrm;
+using rotor::Vec3;
+
+namespace {
+
+lrm::LrmConfig tiny_config() {
+  lrm::LrmConfig c;
+  c.nodes = 16;
+  c.reach = 1.0;
+  c.backend = lbm::Backend::Cpu;
+  return c;
+}
+
+rotor::RotorDiskState state_at(int k, double dt) {
+  rotor::RotorDiskState s;
+  s.time = k * dt;
+  s.radius = 4.92;
+  s.rotor_speed = 44.4;
+  s.density = 1.1934;
+  s.hub_velocity = Vec3(20.0 + 0.5 * std::sin(0.1 * k), 0.0, 0.5);
+  s.aero_force = Vec3(0, 0, -24525.0 - 2000.0 * std::sin(0.05 * k));
+  s.harmonics.cos[0] = s.aero_force;
+  return s;
+}
+
+}  // namespace
+
+TEST(RealTimeInflow, ResultsThatMakeTheirDeadlineAreTheSynchronousOnes) {
+  const double dt = 0.0072;  // about two LBM steps at N = 16 per coupling step
+  lrm::LrmInflow sync(tiny_config(), 0.2);
+  lrm::RealTimeLrmInflow rt(tiny_config(), 0.2, 30.0);  // 30 s: no deadline can pass
+  sync.reset(state_at(0, dt));
+  rt.reset(state_at(0, dt));
+  for (int k = 1; k <= 40; ++k) {
+    sync.advance(state_at(k, dt), dt);
+    rt.advance(state_at(k, dt), dt);
+    ASSERT_EQ(rt.inflow().mean, sync.inflow().mean) << "step " << k;
+    ASSERT_EQ(rt.inflow().cosine, sync.inflow().cosine) << "step " << k;
+  }
+  const auto st = rt.stats();
+  EXPECT_EQ(st.steps, 40);
+  EXPECT_EQ(st.deadline_misses, 0);
+  EXPECT_FALSE(st.last_was_fallback);
+}
+
+TEST(RealTimeInflow, LateResultsAreDroppedAndPittPetersServesThoseSteps) {
+  const double dt = 0.0072;
+  rotor::PittPetersInflow pp;
+  lrm::RealTimeLrmInflow rt(tiny_config(), 0.2, 1e-9);  // no LRM step fits into a nanosecond
+  pp.reset(state_at(0, dt));
+  rt.reset(state_at(0, dt));
+  const Vec3 lrm_start = rt.inflow().mean;
+  for (int k = 1; k <= 40; ++k) {
+    pp.advance(state_at(k, dt), dt);
+    rt.advance(state_at(k, dt), dt);
+    ASSERT_EQ(rt.inflow().mean, pp.inflow().mean) << "step " << k;  // the fallback, current at every step
+  }
+  const auto st = rt.stats();
+  EXPECT_EQ(st.deadline_misses, 40);
+  EXPECT_TRUE(st.last_was_fallback);
+  EXPECT_NE(rt.inflow().mean, lrm_start);
+}
+
+TEST(RealTimeInflow, BadBudgetIsRefused) { EXPECT_THROW(lrm::RealTimeLrmInflow(tiny_config(), 0.2, 0.0), lbm::ConfigError); }
