@@ -41,9 +41,10 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
     std::string mode = "hover", heights, speeds = "0,3,6,9,12,15", faces = "thesis", backend = "auto", out;
     int nodes = 64;
     double reach = 1.25, thrust = 24525, settle = 4, average = 2;
-    bool overwrite = false, no_plot = false;
+    bool overwrite = false, no_plot = false, fuselage = false;
   };
   auto o = std::make_shared<Opts>();
+  ground->add_flag("--fuselage", o->fuselage, "add the Bo 105-like fuselage (walls.hpp) below the disk");
   ground->add_option("--mode", o->mode, "hover (heights swept) or forward (speeds swept at each height)")
       ->check(CLI::IsMember({"hover", "forward"}))
       ->capture_default_str();
@@ -84,6 +85,7 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
       c.settle = o->settle;
       c.average = o->average;
       c.ground_height = z_over_R * cfg.radius;  // 0: out of ground effect
+      c.fuselage = o->fuselage;
       return c;
     };
     for (double v : speeds) {  // every set-up checked before any long run

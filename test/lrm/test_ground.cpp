@@ -91,3 +91,30 @@ TEST(Ground, HoverAtHalfARadiusLiesBetweenCheesemanBennettAndHayden) {
   EXPECT_GT(ratio, lrm::hayden_ratio(0.5));
   EXPECT_LT(ratio, lrm::cheeseman_bennett_ratio(0.5, 0.0, 1.0));
 }
+
+TEST(Fuselage, VoxelisedVolumeMatchesTheShapeAndItStaysBelowTheDisk) {
+  // The body fixed to the domain: cells inside the signed-distance shape become walls. Their volume
+  // must match the shape's (Monte-Carlo integral of the same distance function) to 10 % at N = 64.
+  lrm::LrmConfig c = quick_config();
+  c.nodes = 64;
+  lrm::LrmDomain d(c);
+  auto body = std::make_shared<lrm::Fuselage>();
+  d.add_wall(body);
+  const double dx = d.units().dx();
+  const double voxels = static_cast<double>(d.wall_cells()) * dx * dx * dx;
+  std::uint64_t state = 12345, inside = 0;
+  const int samples = 400000;
+  const Vec3 lo(-6.5, -1.0, -0.5), hi(2.6, 1.0, 2.4);
+  auto uniform = [&]() {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  for (int k = 0; k < samples; ++k) {
+    const Vec3 p(lo.x() + (hi.x() - lo.x()) * uniform(), lo.y() + (hi.y() - lo.y()) * uniform(), lo.z() + (hi.z() - lo.z()) * uniform());
+    if (body->signed_distance(p) < 0) ++inside;
+  }
+  const double volume = (hi - lo).prod() * inside / samples;
+  EXPECT_GT(volume, 5.0);  // cabin and boom, m^3
+  EXPECT_NEAR(voxels, volume, 0.10 * volume);
+  EXPECT_GT(body->signed_distance(Vec3::Zero()), 0.5);  // the hub is clear of the body
+}

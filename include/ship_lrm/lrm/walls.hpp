@@ -59,7 +59,7 @@ class Fuselage final : public WallSurface {
     Vec3 cabin_centre{0.25, 0.0, 1.55};     // m from the hub, mr axes [EST]
     Vec3 cabin_semi_axes{2.2, 0.79, 0.75};  // m: length 4.4, width 1.58 [EST from the 1.58 m width]
     Vec3 boom_start{-1.6, 0.0, 1.25};       // m from the hub [EST]
-    Vec3 boom_end{-6.0, 0.0, 0.0};          // tail rotor hub, 6.0 m aft of and 0.23 m below the main hub [P4B]
+    Vec3 boom_end{-6.0, 0.0, 1.0};          // fin base below the tail rotor (6.0 m aft of the cg [P4B]) [EST]; fin not modelled
     double boom_radius = 0.35;              // m [EST]
   };
   Fuselage() : Fuselage(Shape{}) {}
