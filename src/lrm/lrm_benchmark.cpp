@@ -25,10 +25,14 @@ std::string LrmBenchmarkResult::to_json() const {
   return os.str();
 }
 
-LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg_in, double seconds, double speed,
-                                     double warm_up) {
+namespace {
+
+// The benchmarks' set-up: the Bo 105 trimmed with Pitt-Peters at `speed`, then flown (fuselage held at
+// the trim) with the inflow model `make_inflow(cfg)` builds; reset() runs the LRM warm-up (not timed).
+template <typename Inflow, typename Make>
+std::pair<std::unique_ptr<flight::Helicopter>, Inflow*> trimmed_helicopter(const flight::HelicopterParameters& p, LrmConfig cfg,
+                                                                           double seconds, double speed, Make make_inflow) {
   if (!(seconds > 0)) throw lbm::ConfigError("lrm benchmark: needs seconds > 0");
-  LrmConfig cfg = cfg_in;
   cfg.radius = p.main_rotor.radius;
   cfg.density = p.density;
   flight::Helicopter pp(p);
@@ -36,12 +40,23 @@ LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, cons
   t.speed = speed;
   const flight::TrimResult trim = flight::trim(pp, t);
   if (!trim.converged) throw std::runtime_error(trim.message);
-  auto inflow = std::make_unique<LrmInflow>(cfg, warm_up);
-  LrmInflow* lrm = inflow.get();
-  flight::Helicopter heli(p, std::move(inflow), flight::EngineMode::ConstantSpeed);
-  heli.set_controls(trim.controls);
-  heli.set_body_held(true);
-  heli.reset(trim.body);  // starts the LRM flow and runs its warm-up (not timed)
+  std::unique_ptr<Inflow> inflow = make_inflow(cfg);
+  Inflow* raw = inflow.get();
+  auto heli = std::make_unique<flight::Helicopter>(p, std::move(inflow), flight::EngineMode::ConstantSpeed);
+  heli->set_controls(trim.controls);
+  heli->set_body_held(true);
+  heli->reset(trim.body);
+  return {std::move(heli), raw};
+}
+
+}  // namespace
+
+LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg_in, double seconds, double speed,
+                                     double warm_up) {
+  auto [heli_ptr, lrm] =
+      trimmed_helicopter<LrmInflow>(p, cfg_in, seconds, speed, [&](const LrmConfig& c) { return std::make_unique<LrmInflow>(c, warm_up); });
+  flight::Helicopter& heli = *heli_ptr;
+  const LrmConfig& cfg = cfg_in;
   LrmBenchmarkResult r;
   r.backend = lrm->domain().solver().backend_name();
   r.nodes = cfg.nodes;
@@ -64,21 +79,10 @@ LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, cons
 
 LrmBenchmarkResult run_realtime_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg_in, double seconds, double speed,
                                           double warm_up) {
-  if (!(seconds > 0)) throw lbm::ConfigError("lrm benchmark: needs seconds > 0");
-  LrmConfig cfg = cfg_in;
-  cfg.radius = p.main_rotor.radius;
-  cfg.density = p.density;
-  flight::Helicopter pp(p);
-  flight::TrimTarget t;
-  t.speed = speed;
-  const flight::TrimResult trim = flight::trim(pp, t);
-  if (!trim.converged) throw std::runtime_error(trim.message);
-  auto inflow = std::make_unique<RealTimeLrmInflow>(cfg, warm_up, 1.0);
-  RealTimeLrmInflow* rt = inflow.get();
-  flight::Helicopter heli(p, std::move(inflow), flight::EngineMode::ConstantSpeed);
-  heli.set_controls(trim.controls);
-  heli.set_body_held(true);
-  heli.reset(trim.body);  // LRM warm-up, synchronous, not timed
+  auto [heli_ptr, rt] = trimmed_helicopter<RealTimeLrmInflow>(
+      p, cfg_in, seconds, speed, [&](const LrmConfig& c) { return std::make_unique<RealTimeLrmInflow>(c, warm_up, 1.0); });
+  flight::Helicopter& heli = *heli_ptr;
+  const LrmConfig& cfg = cfg_in;
   LrmBenchmarkResult r;
   r.realtime = true;
   r.backend = rt->lrm().domain().solver().backend_name();

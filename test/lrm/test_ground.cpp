@@ -5,19 +5,14 @@
 
 #include <cmath>
 
+#include "lrm_test_config.hpp"
 #include "ship_lrm/lrm/inflow_sweep.hpp"
 
 using namespace ship_lrm;
 using rotor::Vec3;
 
 namespace {
-lrm::LrmConfig quick_config() {
-  lrm::LrmConfig c;
-  c.nodes = 32;
-  c.reach = 1.25;
-  c.backend = lbm::Backend::Cpu;
-  return c;
-}
+using lrm::test::quick_config;
 
 double worst_deviation(lrm::LrmDomain& d, const Vec3& stream) {
   const lbm::Fields f = d.solver().fields();

@@ -5,19 +5,14 @@
 
 #include <cmath>
 
+#include "lrm_test_config.hpp"
 #include "ship_lrm/lrm/domain.hpp"
 #include "ship_lrm/rotor/momentum_theory.hpp"
 
 using namespace ship_lrm;
 
 namespace {
-lrm::LrmConfig quick_config() {
-  lrm::LrmConfig c;
-  c.nodes = 32;
-  c.reach = 1.25;
-  c.backend = lbm::Backend::Cpu;
-  return c;
-}
+using lrm::test::quick_config;
 }  // namespace
 
 class UniformStream : public ::testing::TestWithParam<std::array<double, 3>> {};

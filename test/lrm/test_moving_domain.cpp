@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "lrm_test_config.hpp"
 #include "ship_lrm/lbm/solver.hpp"
 #include "ship_lrm/lrm/domain.hpp"
 
@@ -14,13 +15,7 @@ using rotor::Vec3;
 
 namespace {
 
-lrm::LrmConfig quick_config() {
-  lrm::LrmConfig c;
-  c.nodes = 32;
-  c.reach = 1.25;
-  c.backend = lbm::Backend::Cpu;
-  return c;
-}
+using lrm::test::quick_config;
 
 // Velocity of every fluid cell (m/s, mr axes) and its position relative to the hub.
 template <typename F>

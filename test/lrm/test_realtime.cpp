@@ -3,6 +3,7 @@
 // the simulated-time (synchronous) result.
 #include <gtest/gtest.h>
 
+#include "lrm_test_config.hpp"
 #include "ship_lrm/lrm/realtime_inflow.hpp"
 
 using namespace ship_lrm;
@@ -10,13 +11,7 @@ using rotor::Vec3;
 
 namespace {
 
-lrm::LrmConfig tiny_config() {
-  lrm::LrmConfig c;
-  c.nodes = 16;
-  c.reach = 1.0;
-  c.backend = lbm::Backend::Cpu;
-  return c;
-}
+lrm::LrmConfig tiny_config() { return lrm::test::quick_config(16, 1.0); }
 
 rotor::RotorDiskState state_at(int k, double dt) {
   rotor::RotorDiskState s;
