@@ -61,13 +61,17 @@ SHIP_LRM_HD void moments(const float g[Q], float& rho, float j[3]) {
 
 // Macroscopic state including the Guo half-force shift u = (j + F/2) / rho (Guo, Zheng & Shi
 // 2002, Phys. Rev. E 65, 046308, eq. 20; thesis 6.1.2 "u* = u + 0.5 dt F").
-SHIP_LRM_HD Macro macro_from_populations(const float g[Q], const float force[3]) {
+SHIP_LRM_HD Macro macro_from_moments(float rho, const float j[3], const float force[3]) {
   Macro m;
-  float j[3];
-  moments(g, m.rho, j);
-  const float inv = 1.0f / m.rho;
+  m.rho = rho;
+  const float inv = 1.0f / rho;
   for (int a = 0; a < 3; ++a) m.u[a] = (j[a] + 0.5f * force[a]) * inv;
   return m;
+}
+SHIP_LRM_HD Macro macro_from_populations(const float g[Q], const float force[3]) {
+  float rho, j[3];
+  moments(g, rho, j);
+  return macro_from_moments(rho, j, force);
 }
 
 // Fictitious forces of a non-inertial frame (the LRM domain fixed to the rotorcraft; ARCHITECTURE.md
@@ -120,19 +124,12 @@ SHIP_LRM_HD float smagorinsky_omega(float nu, float s, float pi_norm_per_rho) {
 }
 
 // BGK collision (thesis eq. 6.9) with Smagorinsky (kSmagorinsky, s = p.smagorinsky) and Guo
-// forcing (force density F per unit volume, lattice units). Overwrites g with the post-collision
-// populations and returns the macroscopic state that entered the equilibrium. The model choice is
-// a template parameter so that the bulk loop has no branches and vectorises.
+// forcing (force density F per unit volume, lattice units) about the state m that enters the
+// equilibrium (with the Guo half-force shift when forced). Overwrites g with the post-collision
+// populations. The model choice is a template parameter so that the bulk loop has no branches and
+// vectorises.
 template <bool kSmagorinsky, bool kForced = true>
-SHIP_LRM_HD Macro collide(float g[Q], const float force[3], const CollisionParams& p) {
-  Macro m;
-  if (kForced) {
-    m = macro_from_populations(g, force);
-  } else {
-    moments(g, m.rho, m.u);
-    const float inv = 1.0f / m.rho;
-    for (int a = 0; a < 3; ++a) m.u[a] *= inv;
-  }
+SHIP_LRM_HD void relax(float g[Q], const Macro& m, const float force[3], const CollisionParams& p) {
   const float omega = kSmagorinsky ? smagorinsky_omega(p.nu, p.smagorinsky, pi_neq_norm(g, m) / m.rho) : omega_from_nu(p.nu);
   const float guo = 1.0f - 0.5f * omega;
   const float uF = m.u[0] * force[0] + m.u[1] * force[1] + m.u[2] * force[2];
@@ -145,12 +142,10 @@ SHIP_LRM_HD Macro collide(float g[Q], const float force[3], const CollisionParam
     const float source = kForced ? guo * d3q19::w(i) * (3.0f * (cF - uF) + 9.0f * cu * cF) : 0.0f;
     g[i] += omega * (equilibrium(i, m.rho, m.u) - g[i]) + source;
   }
-  return m;
 }
-
-// Collision with the model chosen at run time (cells off the vectorised bulk path).
-SHIP_LRM_HD Macro collide(float g[Q], const float force[3], const CollisionParams& p) {
-  return p.smagorinsky > 0.0f ? collide<true>(g, force, p) : collide<false>(g, force, p);
+// With the model chosen at run time (cells off the vectorised bulk path).
+SHIP_LRM_HD void relax(float g[Q], const Macro& m, const float force[3], const CollisionParams& p) {
+  p.smagorinsky > 0.0f ? relax<true>(g, m, force, p) : relax<false>(g, m, force, p);
 }
 
 // ---- Open boundaries (thesis 6.1.3) ---------------------------------------------------------

@@ -77,19 +77,22 @@ SHIP_LRM_HD void cell_coords(const LatticeView& v, std::size_t c, int& x, int& y
   z = static_cast<int>(r / v.n[1]);
 }
 
-// Force density on cell c whose pre-collision populations are g.
+// Force density F on cell c and the state (density, velocity with the Guo half-force shift) that
+// enters its collision, from its pre-collision populations g: the moments are summed once, since
+// the frame's fictitious forces need them too.
 template <int kForce>
-SHIP_LRM_HD void cell_force(const LatticeView& v, std::size_t c, const float g[Q], float F[3]) {
+SHIP_LRM_HD Macro cell_state(const LatticeView& v, std::size_t c, const float g[Q], float F[3]) {
   const bool field = kForce == kForceField || (kForce == kFrameForce && v.force != nullptr);
   for (int a = 0; a < 3; ++a) F[a] = (kForce == kNoForce ? 0.0f : v.uniform_force[a]) + (field ? v.force[a * v.ncells + c] : 0.0f);
+  float rho, j[3];
+  moments(g, rho, j);
   if (kForce == kFrameForce) {
     int x, y, z;
     cell_coords(v, c, x, y, z);
     const float p[3] = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
-    float rho, j[3];
-    moments(g, rho, j);
     add_frame_force(v.frame, p, rho, j, F);
   }
+  return macro_from_moments(rho, j, F);
 }
 SHIP_LRM_HD int force_mode(const LatticeView& v) {
   if (v.frame_active) return kFrameForce;
@@ -97,19 +100,16 @@ SHIP_LRM_HD int force_mode(const LatticeView& v) {
                  : ((v.uniform_force[0] != 0.0f || v.uniform_force[1] != 0.0f || v.uniform_force[2] != 0.0f) ? kUniformForce : kNoForce);
 }
 // The same with the mode chosen at run time (cells off the vectorised bulk path).
-SHIP_LRM_HD void cell_force(const LatticeView& v, std::size_t c, const float g[Q], float F[3]) {
+SHIP_LRM_HD Macro cell_state(const LatticeView& v, std::size_t c, const float g[Q], float F[3]) {
   switch (force_mode(v)) {
     case kNoForce:
-      cell_force<kNoForce>(v, c, g, F);
-      break;
+      return cell_state<kNoForce>(v, c, g, F);
     case kUniformForce:
-      cell_force<kUniformForce>(v, c, g, F);
-      break;
+      return cell_state<kUniformForce>(v, c, g, F);
     case kForceField:
-      cell_force<kForceField>(v, c, g, F);
-      break;
+      return cell_state<kForceField>(v, c, g, F);
     default:
-      cell_force<kFrameForce>(v, c, g, F);
+      return cell_state<kFrameForce>(v, c, g, F);
   }
 }
 
@@ -217,8 +217,8 @@ SHIP_LRM_HD void update_bulk_cell(const LatticeView& v, std::size_t c, const std
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) g[i] = kOdd ? load_pop(pop(v, d3q19::opp(i), c + off[d3q19::opp(i)])) : load_pop(pop(v, i, c));
   float F[3];
-  cell_force<kForce>(v, c, g, F);
-  collide<kSmagorinsky, kForce != kNoForce>(g, F, v.params);
+  const Macro m = cell_state<kForce>(v, c, g, F);
+  relax<kSmagorinsky, kForce != kNoForce>(g, m, F, v.params);
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) {
     if (kOdd)
@@ -254,8 +254,8 @@ SHIP_LRM_HD void update_segment_cell(const LatticeView& v, std::size_t c, pop_t*
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) g[i] = load_pop(src[i][c]);
   float F[3];
-  cell_force<kForce>(v, c, g, F);
-  collide<kSmagorinsky, kForce != kNoForce>(g, F, v.params);
+  const Macro m = cell_state<kForce>(v, c, g, F);
+  relax<kSmagorinsky, kForce != kNoForce>(g, m, F, v.params);
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) dst[i][c] = store_pop(g[i]);
 }
@@ -318,8 +318,7 @@ SHIP_LRM_HD void update_wall_cell(const LatticeView& v, std::size_t c, std::uint
   cell_coords(v, c, x, y, z);
   float g[Q], F[3];
   gather_cell<kOdd>(v, c, x, y, z, mask, g);
-  cell_force(v, c, g, F);
-  collide(g, F, v.params);
+  relax(g, cell_state(v, c, g, F), F, v.params);
   scatter_cell<kOdd>(v, c, x, y, z, mask, g);
 }
 
@@ -447,8 +446,7 @@ SHIP_LRM_HD Macro fluid_macro(const LatticeView& v, std::size_t c) {
   cell_coords(v, c, x, y, z);
   float g[Q], F[3];
   gather<kOdd>(v, x, y, z, c, g);
-  cell_force(v, c, g, F);
-  return macro_from_populations(g, F);
+  return cell_state(v, c, g, F);
 }
 
 // Pass 1 of a step with open boundaries: state of support cell c (b >= 0 for boundary cells).
@@ -458,9 +456,8 @@ SHIP_LRM_HD void update_support_macro(const LatticeView& v, std::size_t c, int b
   cell_coords(v, c, x, y, z);
   float g[Q], F[3];
   gather_cell<kOdd>(v, c, x, y, z, mask, g);
-  cell_force(v, c, g, F);
   if (b < 0) {
-    store_aux(v, c, macro_from_populations(g, F));
+    store_aux(v, c, cell_state(v, c, g, F));
     return;
   }
   Macro m = boundary_macro(v, b, g, load_aux(v, c));
@@ -528,8 +525,7 @@ SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
                       0.5f * (grad[0][2] + grad[2][0]),
                       0.5f * (grad[1][2] + grad[2][1])};
   reconstruct_fd(g, m.rho, m.u, S, omega_from_nu(v.params.nu));
-  cell_force(v, c, g, F);
-  collide(g, F, v.params);
+  relax(g, cell_state(v, c, g, F), F, v.params);
   scatter_cell<kOdd>(v, c, x, y, z, v.bnd_mask[b], g);
 }
 
