@@ -92,6 +92,22 @@ __global__ void fields_kernel(LatticeView v, float* rho, float* u) {
   for (int a = 0; a < 3; ++a) u[3 * c + a] = m.u[a];
 }
 
+// Velocity at listed cells (the LRM's rotor-disk cells), so that only those cross to the host.
+template <bool kOdd>
+__global__ void gather_velocity_kernel(LatticeView v, const std::uint32_t* cells, std::size_t n, float* u) {
+  const std::size_t k = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (k >= n) return;
+  const Macro m = device_macro<kOdd>(v, cells[k]);
+  for (int a = 0; a < 3; ++a) u[3 * k + a] = m.u[a];
+}
+
+// Force density at listed cells into the structure-of-arrays force field (ncells per component).
+__global__ void scatter_force_kernel(float* force, std::size_t ncells, const std::uint32_t* cells, std::size_t n, const float* f) {
+  const std::size_t k = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (k >= n) return;
+  for (int a = 0; a < 3; ++a) force[a * ncells + cells[k]] = f[3 * k + a];
+}
+
 template <bool kOdd>
 __global__ void divergence_kernel(LatticeView v, float limit2, unsigned long long* first) {
   const std::size_t c = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
@@ -189,6 +205,39 @@ class CudaSolver final : public Solver {
   }
 
   void do_set_boundary_values(const std::vector<float>& values) override { bnd_value_.upload(values); }
+
+  // Only the listed cells cross the bus (the default would download or upload whole fields).
+  void do_velocities(bool next_odd, const std::vector<std::uint32_t>& cells, std::vector<float>& out) override {
+    if (cells.empty()) return;
+    if (cells != gather_host_) {
+      gather_cells_.upload(cells);
+      gather_host_ = cells;
+    }
+    if (gather_out_.size() != out.size()) gather_out_.resize(out.size());
+    if (next_odd)
+      gather_velocity_kernel<true><<<blocks(cells.size()), kBlock>>>(view_, gather_cells_.data(), cells.size(), gather_out_.data());
+    else
+      gather_velocity_kernel<false><<<blocks(cells.size()), kBlock>>>(view_, gather_cells_.data(), cells.size(), gather_out_.data());
+    check(cudaGetLastError(), "velocities");
+    gather_out_.download(out);
+  }
+
+  void do_set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f) override {
+    const std::size_t n = lattice_.cells();
+    if (force_.size() != 3 * n) {
+      force_.resize(3 * n);
+      check(cudaMemset(force_.data(), 0, 3 * n * sizeof(float)), "force field");
+      sync_view();
+    }
+    if (cells.empty()) return;
+    if (cells != scatter_host_) {
+      scatter_cells_.upload(cells);
+      scatter_host_ = cells;
+    }
+    scatter_values_.upload(f);
+    scatter_force_kernel<<<blocks(cells.size()), kBlock>>>(force_.data(), n, scatter_cells_.data(), cells.size(), scatter_values_.data());
+    check(cudaGetLastError(), "cell forces");
+  }
 
   std::vector<float> populations() override {
     std::vector<pop_t> h;
@@ -290,6 +339,10 @@ class CudaSolver final : public Solver {
   DeviceArray<float> bnd_value_, force_, aux_;
   DeviceArray<std::int64_t> row_offsets_;
   DeviceArray<std::uint32_t> link_mask_;  // per cell (read by cells off the bulk path only)
+  // listed-cell exchange (velocities, cell forces): the cell lists stay on the device while unchanged
+  DeviceArray<std::uint32_t> gather_cells_, scatter_cells_;
+  std::vector<std::uint32_t> gather_host_, scatter_host_;
+  DeviceArray<float> gather_out_, scatter_values_;
   unsigned long long* flag_ = nullptr;
 };
 

@@ -117,12 +117,6 @@ std::vector<float> Solver::velocities(const std::vector<std::uint32_t>& cells) {
   return out;
 }
 
-void Solver::do_velocities(bool, const std::vector<std::uint32_t>& cells, std::vector<float>& out) {
-  const Fields f = fields();
-  for (std::size_t k = 0; k < cells.size(); ++k)
-    for (int a = 0; a < 3; ++a) out[3 * k + a] = f.u[3 * static_cast<std::size_t>(cells[k]) + a];
-}
-
 void Solver::set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f) {
   if (f.size() != 3 * cells.size()) throw ConfigError("set_cell_forces: expected 3 values per listed cell");
   for (std::size_t k = 0; k < cells.size(); ++k) {
@@ -131,13 +125,6 @@ void Solver::set_cell_forces(const std::vector<std::uint32_t>& cells, const std:
       if (!std::isfinite(f[3 * k + a])) throw ConfigError("set_cell_forces: force is not finite");
   }
   do_set_cell_forces(cells, f);
-}
-
-void Solver::do_set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f) {
-  if (force_mirror_.empty()) force_mirror_.assign(3 * lattice_.cells(), 0.0f);
-  for (std::size_t k = 0; k < cells.size(); ++k)
-    for (int a = 0; a < 3; ++a) force_mirror_[3 * static_cast<std::size_t>(cells[k]) + a] = f[3 * k + a];
-  set_force_field(force_mirror_);
 }
 
 void Solver::set_uniform_force(const std::array<float, 3>& f) {

@@ -1,13 +1,24 @@
 // The LRM domain behind the rotor-inflow interface (see lrm_inflow.hpp).
 #include "ship_lrm/lrm/lrm_inflow.hpp"
 
+#include <chrono>
 #include <cmath>
 
 namespace ship_lrm::lrm {
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point& t) {  // and restarts t
+  const auto now = Clock::now();
+  const double s = std::chrono::duration<double>(now - t).count();
+  t = now;
+  return s;
+}
+}  // namespace
 
 LrmInflow::LrmInflow(const LrmConfig& cfg, double warm_up) : domain_(cfg), warm_up_(warm_up) {}
 
-void LrmInflow::take(const rotor::RotorDiskState& s) {
+void LrmInflow::take(const rotor::RotorDiskState& s, CouplingTimes* times) {
+  auto t = Clock::now();
   LrmDomain::Motion m;
   m.air_velocity = -s.hub_velocity;
   m.omega = s.body_rate;
@@ -18,7 +29,9 @@ void LrmInflow::take(const rotor::RotorDiskState& s) {
     m.hub_acceleration = (s.hub_velocity - previous_velocity_) / dt + s.body_rate.cross(s.hub_velocity);
   }
   domain_.set_motion(m);
+  if (times) times->motion += seconds_since(t);
   domain_.set_rotor_forces(s.harmonics);
+  if (times) times->forces += seconds_since(t);
   have_previous_ = true;
   previous_time_ = s.time;
   previous_velocity_ = s.hub_velocity;
@@ -38,13 +51,17 @@ void LrmInflow::reset(const rotor::RotorDiskState& state) {
 
 void LrmInflow::advance(const rotor::RotorDiskState& state, double dt) {
   if (!started_) reset(state);
-  take(state);
+  take(state, &times_);
   time_ += dt;
   // whole LBM steps up to the flight model's time (one per coupling step at N = 64: both 1.80352 ms)
   const long n = static_cast<long>(std::floor((time_ - domain_.time()) / domain_.time_step() + 0.5));
   if (n <= 0) return;  // a coarse lattice steps less often; the last inflow holds meanwhile
+  auto t = Clock::now();
   domain_.step(n);
+  domain_.solver().synchronize();
+  times_.lbm += seconds_since(t);
   inflow_ = domain_.inflow();
+  times_.inflow += seconds_since(t);
 }
 
 }  // namespace ship_lrm::lrm

@@ -40,11 +40,13 @@ void RealTimeLrmInflow::worker() {
     } catch (...) {
       err = std::current_exception();
     }
+    const auto finished = std::chrono::steady_clock::now();
     lock.lock();
     busy_ = false;
     ++stats_.lrm_jobs;
     result_ = out;
     result_id_ = id;
+    result_time_ = finished;
     if (err) error_ = err;
     result_ready_.notify_all();
   }
@@ -86,8 +88,11 @@ void RealTimeLrmInflow::advance(const rotor::RotorDiskState& state, double dt) {
   const auto deadline = deadline_ != std::chrono::steady_clock::time_point{}
                             ? deadline_
                             : posted + std::chrono::duration_cast<std::chrono::steady_clock::duration>(budget_);
-  const bool on_time = result_ready_.wait_until(lock, deadline, [&] { return result_id_ == id || error_ != nullptr; });
+  result_ready_.wait_until(lock, deadline, [&] { return result_id_ == id || error_ != nullptr; });
   if (error_) std::rethrow_exception(error_);
+  // Judged by when the LRM thread finished, not by when this thread woke up: a waiter woken late by
+  // the scheduler must not accept a result that came after its deadline (firm deadline).
+  const bool on_time = result_id_ == id && result_time_ <= deadline;
   if (on_time) {
     served_ = result_;
     stats_.last_was_fallback = false;

@@ -66,10 +66,10 @@ class Solver {
   void set_frame_motion(const FrameMotion& m);
   // New rigid-body motion of moving wall `wall` (an index from Lattice::add_wall_motion).
   void set_wall_motion(int wall, const WallMotion& m);
-  // Velocity (3 per listed cell, interleaved) of some cells; cheaper than fields() on the CPU.
+  // Velocity (3 per listed cell, interleaved) of some cells; only those are read (and, on a GPU, copied).
   std::vector<float> velocities(const std::vector<std::uint32_t>& cells);
   // Change the force density of some cells (3 values per listed cell), others keep theirs; the
-  // first call sets up a zero force field. Cheaper than set_force_field() on the CPU.
+  // first call sets up a zero force field. Only the listed cells are written (and copied to a GPU).
   void set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f);
   // Values of the open-boundary cells, 4 per cell in lattice().boundary_cells() order:
   // velocity inlet (ux, uy, uz, -), pressure outlet (rho, -, -, -), impedance outlet (the undisturbed
@@ -94,10 +94,9 @@ class Solver {
   virtual void sync_view() = 0;                                               // after view_ parameters changed on the host
   virtual void sync_walls() {}                                                // after lattice_'s wall motions changed (device copy)
   virtual void do_set_boundary_values(const std::vector<float>& values) = 0;  // validated, 4 per cell
-  // Defaults go through fields() / set_force_field(); backends may do better.
-  virtual void do_velocities(bool next_odd, const std::vector<std::uint32_t>& cells, std::vector<float>& out);
-  virtual void do_set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f);
-  std::vector<float> force_mirror_;  // host copy for the default do_set_cell_forces
+  // Listed cells only (validated): velocities out, force densities in; no whole-field traffic.
+  virtual void do_velocities(bool next_odd, const std::vector<std::uint32_t>& cells, std::vector<float>& out) = 0;
+  virtual void do_set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f) = 0;
   // Index of the first cell whose speed is non-finite or above limit, or -1.
   virtual long long do_find_divergent(bool next_odd, float limit) = 0;
 

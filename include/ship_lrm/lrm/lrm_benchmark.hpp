@@ -16,6 +16,9 @@ struct LrmBenchmarkResult {
   double simulated_seconds = 0, wall_seconds = 0;
   double clock_over_sim = 0;  // t_clock / t_sim (thesis 8.3.1; < 1 is real time)
   double mlups = 0;           // million lattice updates per second
+  // simulated-time run: where the wall time went (LrmInflow::times(); flight = the rest)
+  bool has_split = false;
+  double motion_s = 0, forces_s = 0, lbm_s = 0, inflow_s = 0, flight_s = 0;
   // paced wall-clock run (run_realtime_benchmark): firm deadlines, Pitt-Peters fallback
   bool realtime = false;
   long deadline_misses = 0;

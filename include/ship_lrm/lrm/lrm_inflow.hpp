@@ -17,6 +17,15 @@
 
 namespace ship_lrm::lrm {
 
+// Wall-clock seconds spent in each part of the coupling steps (advance() only, not the warm-up),
+// for the benchmark's breakdown: what a faster LBM kernel cannot remove.
+struct CouplingTimes {
+  double motion = 0;  // domain motion: face velocities and frame forces to the solver
+  double forces = 0;  // rotor force harmonics to the disk cells' forces
+  double lbm = 0;     // the LBM steps (device synchronised)
+  double inflow = 0;  // disk velocities back and their harmonics
+};
+
 class LrmInflow final : public rotor::InflowModel {
  public:
   // warm_up: simulated seconds run at the first reset() so the wake develops.
@@ -31,9 +40,11 @@ class LrmInflow final : public rotor::InflowModel {
 
   LrmDomain& domain() { return domain_; }
   long lbm_steps() { return domain_.solver().steps_done(); }
+  const CouplingTimes& times() const { return times_; }
 
  private:
-  void take(const rotor::RotorDiskState& s);
+  void take(const rotor::RotorDiskState& s, CouplingTimes* times = nullptr);
+  CouplingTimes times_;
   LrmDomain domain_;
   double warm_up_;
   bool started_ = false;

@@ -65,6 +65,7 @@ class RealTimeLrmInflow final : public rotor::InflowModel {
   rotor::RotorDiskState job_state_;
   double job_dt_ = 0;
   rotor::RotorInflow result_;
+  std::chrono::steady_clock::time_point result_time_{};  // when the LRM thread finished result_
   std::exception_ptr error_;
   // time and state not yet handed to the LRM thread (it was busy)
   double pending_dt_ = 0;
