@@ -19,11 +19,11 @@ std::string LrmBenchmarkResult::to_json() const {
      << ", \"lbm_steps\": " << lbm_steps << ", \"simulated_s\": " << simulated_seconds << ", \"wall_s\": " << wall_seconds
      << ", \"clock_over_sim\": " << clock_over_sim << ", \"mlups\": " << mlups;
   if (has_split)
-    os << ", \"split_s\": {\"lbm\": " << lbm_s << ", \"motion\": " << motion_s << ", \"forces\": " << forces_s << ", \"inflow\": " << inflow_s
-       << ", \"flight\": " << flight_s << "}";
+    os << ", \"split_s\": {\"lbm\": " << lbm_s << ", \"motion\": " << motion_s << ", \"forces\": " << forces_s
+       << ", \"inflow\": " << inflow_s << ", \"flight\": " << flight_s << "}";
   if (realtime)
-    os << ", \"realtime\": true, \"deadline_misses\": " << deadline_misses << ", \"miss_fraction\": " << miss_fraction
-       << ", \"worst_wait_s\": " << worst_wait_s << ", \"worst_step_s\": " << worst_step_s;
+    os << ", \"realtime\": true, \"pipelined\": " << (pipelined ? "true" : "false") << ", \"deadline_misses\": " << deadline_misses
+       << ", \"miss_fraction\": " << miss_fraction << ", \"worst_wait_s\": " << worst_wait_s << ", \"worst_step_s\": " << worst_step_s;
   os << "}";
   return os.str();
 }
@@ -89,13 +89,14 @@ LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, cons
 }
 
 LrmBenchmarkResult run_realtime_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg_in, double seconds, double speed,
-                                          double warm_up) {
+                                          double warm_up, RealTimeMode mode) {
   auto [heli_ptr, rt] = trimmed_helicopter<RealTimeLrmInflow>(
-      p, cfg_in, seconds, speed, [&](const LrmConfig& c) { return std::make_unique<RealTimeLrmInflow>(c, warm_up, 1.0); });
+      p, cfg_in, seconds, speed, [&](const LrmConfig& c) { return std::make_unique<RealTimeLrmInflow>(c, warm_up, 1.0, mode); });
   flight::Helicopter& heli = *heli_ptr;
   const LrmConfig& cfg = cfg_in;
   LrmBenchmarkResult r;
   r.realtime = true;
+  r.pipelined = mode == RealTimeMode::Pipelined;
   r.backend = rt->lrm().domain().solver().backend_name();
   r.nodes = cfg.nodes;
   r.reach = cfg.reach;

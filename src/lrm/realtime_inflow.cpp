@@ -6,8 +6,8 @@
 
 namespace ship_lrm::lrm {
 
-RealTimeLrmInflow::RealTimeLrmInflow(const LrmConfig& cfg, double warm_up, double budget)
-    : lrm_(std::make_unique<LrmInflow>(cfg, warm_up)), budget_(budget) {
+RealTimeLrmInflow::RealTimeLrmInflow(const LrmConfig& cfg, double warm_up, double budget, RealTimeMode mode)
+    : lrm_(std::make_unique<LrmInflow>(cfg, warm_up)), mode_(mode), budget_(budget) {
   if (!(budget > 0)) throw lbm::ConfigError("real-time LRM: the deadline budget must be > 0 s");
   thread_ = std::thread([this] { worker(); });
 }
@@ -63,7 +63,11 @@ void RealTimeLrmInflow::reset(const rotor::RotorDiskState& state) {
   lrm_->reset(state);
   fallback_.reset(state);
   served_ = lrm_->inflow();
+  last_lrm_ = served_;
+  have_lrm_ = true;
+  in_flight_ = false;
   pending_dt_ = 0;
+  lbm_dt_ = lrm_->domain().time_step();
 }
 
 void RealTimeLrmInflow::advance(const rotor::RotorDiskState& state, double dt) {
@@ -72,34 +76,77 @@ void RealTimeLrmInflow::advance(const rotor::RotorDiskState& state, double dt) {
   ++stats_.steps;
   if (error_) std::rethrow_exception(error_);
   pending_dt_ += dt;
+  if (mode_ == RealTimeMode::LockStep)
+    advance_lockstep(lock, state);
+  else
+    advance_pipelined(lock, state, dt);
+}
+
+long RealTimeLrmInflow::post(const rotor::RotorDiskState& state) {
+  const long id = ++job_id_;
+  job_state_ = state;
+  job_dt_ = pending_dt_;
+  pending_dt_ = 0;
+  has_job_ = true;
+  job_ready_.notify_one();
+  return id;
+}
+
+bool RealTimeLrmInflow::collect(std::unique_lock<std::mutex>& lock, long id, std::chrono::steady_clock::time_point deadline) {
+  result_ready_.wait_until(lock, deadline, [&] { return result_id_ == id || error_ != nullptr; });
+  if (error_) std::rethrow_exception(error_);
+  // Judged by when the LRM thread finished, not by when this thread woke up: a waiter woken late by
+  // the scheduler must not accept a result that came after its deadline (firm deadline).
+  return result_id_ == id && result_time_ <= deadline;
+}
+
+std::chrono::steady_clock::time_point RealTimeLrmInflow::deadline_after(std::chrono::steady_clock::time_point posted, int steps) const {
+  if (deadline_ != std::chrono::steady_clock::time_point{}) return deadline_;  // paced: this step's due time
+  return posted + std::chrono::duration_cast<std::chrono::steady_clock::duration>(budget_ * steps);
+}
+
+void RealTimeLrmInflow::advance_lockstep(std::unique_lock<std::mutex>& lock, const rotor::RotorDiskState& state) {
   if (busy_ || has_job_) {  // still working on an earlier step: this one cannot make it
     ++stats_.deadline_misses;
     stats_.last_was_fallback = true;
     served_ = fallback_.inflow();
     return;
   }
-  job_state_ = state;
-  job_dt_ = pending_dt_;
-  pending_dt_ = 0;
-  const long id = ++job_id_;
-  has_job_ = true;
-  job_ready_.notify_one();
   const auto posted = std::chrono::steady_clock::now();
-  const auto deadline = deadline_ != std::chrono::steady_clock::time_point{}
-                            ? deadline_
-                            : posted + std::chrono::duration_cast<std::chrono::steady_clock::duration>(budget_);
-  result_ready_.wait_until(lock, deadline, [&] { return result_id_ == id || error_ != nullptr; });
-  if (error_) std::rethrow_exception(error_);
-  // Judged by when the LRM thread finished, not by when this thread woke up: a waiter woken late by
-  // the scheduler must not accept a result that came after its deadline (firm deadline).
-  const bool on_time = result_id_ == id && result_time_ <= deadline;
-  if (on_time) {
+  const long id = post(state);
+  if (collect(lock, id, deadline_after(posted, 1))) {
     served_ = result_;
     stats_.last_was_fallback = false;
     stats_.worst_wait_s = std::max(stats_.worst_wait_s, std::chrono::duration<double>(std::chrono::steady_clock::now() - posted).count());
   } else {
     ++stats_.deadline_misses;  // the result for this step will be dropped when it arrives
     stats_.last_was_fallback = true;
+    served_ = fallback_.inflow();
+  }
+}
+
+void RealTimeLrmInflow::advance_pipelined(std::unique_lock<std::mutex>& lock, const rotor::RotorDiskState& state, double dt) {
+  lag_steps_ = std::max(1, static_cast<int>(std::lround(lbm_dt_ / dt)));
+  if (in_flight_ && stats_.steps >= due_step_) {
+    const auto t = std::chrono::steady_clock::now();
+    in_flight_ = false;
+    have_lrm_ = collect(lock, in_flight_id_, deadline_after(in_flight_posted_, lag_steps_));
+    if (have_lrm_) {
+      last_lrm_ = result_;
+      stats_.worst_wait_s = std::max(stats_.worst_wait_s, std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
+    }
+  }
+  if (!in_flight_ && !busy_ && !has_job_) {  // a late job still running keeps the thread: post later
+    in_flight_posted_ = std::chrono::steady_clock::now();
+    in_flight_id_ = post(state);
+    in_flight_ = true;
+    due_step_ = stats_.steps + lag_steps_;
+  }
+  stats_.last_was_fallback = !have_lrm_;
+  if (have_lrm_) {
+    served_ = last_lrm_;
+  } else {
+    ++stats_.deadline_misses;
     served_ = fallback_.inflow();
   }
 }

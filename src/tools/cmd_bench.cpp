@@ -48,7 +48,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
     std::string backend = "auto";
     int nodes = 64;
     double reach = 1.25, seconds = 2, speed = 25, warm_up = 0.5;
-    bool json = false, realtime = false;
+    bool json = false, realtime = false, pipelined = false;
   };
   auto lo = std::make_shared<LrmOpts>();
   lrm_cmd->add_option("--backend", lo->backend, "cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
@@ -61,6 +61,9 @@ std::function<int()> add_bench_command(CLI::App& app) {
   lrm_cmd->add_flag("--realtime", lo->realtime,
                     "pace the run to the wall clock with firm deadlines (LRM in its own thread, Pitt-Peters for late steps): "
                     "counts deadline misses");
+  lrm_cmd->add_flag("--pipelined", lo->pipelined,
+                    "with --realtime: the LRM runs one LBM interval behind the flight model (a job is due one LBM step after "
+                    "its loads were posted) instead of lock-step");
 #endif
   return [o, lbm
 #ifdef SHIP_LRM_HAVE_FLIGHT
@@ -75,7 +78,9 @@ std::function<int()> add_bench_command(CLI::App& app) {
       c.reach = lo->reach;
       c.backend = lbm::parse_backend(lo->backend);
       const auto p = flight::load_default_bo105();
-      const auto r = lo->realtime ? lrm::run_realtime_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up)
+      if (lo->pipelined && !lo->realtime) throw lbm::ConfigError("bench lrm: --pipelined needs --realtime");
+      const auto mode = lo->pipelined ? lrm::RealTimeMode::Pipelined : lrm::RealTimeMode::LockStep;
+      const auto r = lo->realtime ? lrm::run_realtime_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up, mode)
                                   : lrm::run_lrm_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up);
       if (lo->json) {
         std::cout << r.to_json() << std::endl;

@@ -56,8 +56,8 @@ void compare(Solver& cpu, Solver& gpu, long steps, double tolerance) {
   const Lattice& lat = cpu.lattice();
   const int x = static_cast<int>(worst % lat.nx()), y = static_cast<int>(worst / lat.nx() % lat.ny()),
             z = static_cast<int>(worst / (static_cast<std::size_t>(lat.nx()) * lat.ny()));
-  std::printf("after %ld steps: max |du| / max |u| = %.3g (cell %d %d %d, type %d), max |drho| / rho = %.3g\n", cpu.steps_done(), du / umax, x,
-              y, z, static_cast<int>(cpu.lattice().types()[worst]), drho);
+  std::printf("after %ld steps: max |du| / max |u| = %.3g (cell %d %d %d, type %d), max |drho| / rho = %.3g\n", cpu.steps_done(), du / umax,
+              x, y, z, static_cast<int>(cpu.lattice().types()[worst]), drho);
   EXPECT_LT(du / umax, tolerance);
   EXPECT_LT(drho, tolerance);
 }

@@ -28,7 +28,7 @@ rotor::RotorDiskState state_at(int k, double dt) {
 }  // namespace
 
 TEST(RealTimeInflow, ResultsThatMakeTheirDeadlineAreTheSynchronousOnes) {
-  const double dt = 0.0072;  // about two LBM steps at N = 16 per coupling step
+  const double dt = 0.0072;  // about one LBM step at N = 16 (7.2 ms) per coupling step
   lrm::LrmInflow sync(tiny_config(), 0.2);
   lrm::RealTimeLrmInflow rt(tiny_config(), 0.2, 30.0);  // 30 s: no deadline can pass
   sync.reset(state_at(0, dt));
@@ -61,6 +61,60 @@ TEST(RealTimeInflow, LateResultsAreDroppedAndPittPetersServesThoseSteps) {
   EXPECT_EQ(st.deadline_misses, 40);
   EXPECT_TRUE(st.last_was_fallback);
   EXPECT_NE(rt.inflow().mean, lrm_start);
+}
+
+// Pipelined: the inflow served at each step is the synchronous model's answer to the job posted
+// lag_steps() earlier (that step's loads, the time since the previous job), held until the next one.
+TEST(RealTimeInflow, PipelinedServesTheSynchronousInflowOneLbmIntervalLater) {
+  const double dt = 0.0036;  // half the N = 16 lattice's 7.2 ms step
+  lrm::LrmInflow ref(tiny_config(), 0.2);
+  lrm::RealTimeLrmInflow rt(tiny_config(), 0.2, 30.0, lrm::RealTimeMode::Pipelined);
+  ref.reset(state_at(0, dt));
+  rt.reset(state_at(0, dt));
+  rotor::RotorInflow expected = ref.inflow(), next;
+  double pending = 0;
+  long due = -1;
+  int changes = 0;
+  for (int k = 1; k <= 40; ++k) {
+    rt.advance(state_at(k, dt), dt);
+    const int m = rt.lag_steps();
+    ASSERT_EQ(m, 2) << "an LBM step of two flight steps";
+    pending += dt;
+    if (due == k) {
+      changes += next.mean != expected.mean;
+      expected = next;
+      due = -1;
+    }
+    if (due < 0) {
+      ref.advance(state_at(k, dt), pending);
+      pending = 0;
+      next = ref.inflow();
+      due = k + m;
+    }
+    ASSERT_EQ(rt.inflow().mean, expected.mean) << "step " << k;
+    ASSERT_EQ(rt.inflow().cosine, expected.cosine) << "step " << k;
+  }
+  EXPECT_GT(changes, 10) << "the LRM inflow must evolve, or the comparison shows nothing";
+  EXPECT_EQ(rt.stats().deadline_misses, 0);
+}
+
+TEST(RealTimeInflow, PipelinedLateJobsAreDroppedAndPittPetersServesUntilOneIsOnTime) {
+  const double dt = 0.0036;
+  rotor::PittPetersInflow pp;
+  lrm::RealTimeLrmInflow rt(tiny_config(), 0.2, 1e-9, lrm::RealTimeMode::Pipelined);
+  pp.reset(state_at(0, dt));
+  rt.reset(state_at(0, dt));
+  const Vec3 lrm_start = rt.inflow().mean;
+  for (int k = 1; k <= 40; ++k) {
+    pp.advance(state_at(k, dt), dt);
+    rt.advance(state_at(k, dt), dt);
+    if (k <= rt.lag_steps())
+      ASSERT_EQ(rt.inflow().mean, lrm_start) << "before the first job is due: the last on-time LRM inflow (the warm-up's)";
+    else
+      ASSERT_EQ(rt.inflow().mean, pp.inflow().mean) << "step " << k;
+  }
+  EXPECT_EQ(rt.stats().deadline_misses, 40 - rt.lag_steps());
+  EXPECT_TRUE(rt.stats().last_was_fallback);
 }
 
 TEST(RealTimeInflow, BadBudgetIsRefused) { EXPECT_THROW(lrm::RealTimeLrmInflow(tiny_config(), 0.2, 0.0), lbm::ConfigError); }

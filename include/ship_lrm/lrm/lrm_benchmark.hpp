@@ -5,6 +5,7 @@
 
 #include "ship_lrm/flight/parameters.hpp"
 #include "ship_lrm/lrm/domain.hpp"
+#include "ship_lrm/lrm/realtime_inflow.hpp"
 
 namespace ship_lrm::lrm {
 
@@ -21,6 +22,7 @@ struct LrmBenchmarkResult {
   double motion_s = 0, forces_s = 0, lbm_s = 0, inflow_s = 0, flight_s = 0;
   // paced wall-clock run (run_realtime_benchmark): firm deadlines, Pitt-Peters fallback
   bool realtime = false;
+  bool pipelined = false;
   long deadline_misses = 0;
   double miss_fraction = 0, worst_wait_s = 0, worst_step_s = 0;
   std::string to_json() const;
@@ -34,6 +36,6 @@ LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, cons
 // The same coupled step paced to the wall clock (RealTimeLrmInflow): each flight-model step is due at
 // t0 + k dt; the LRM inflow that misses that deadline is replaced by Pitt-Peters and counted.
 LrmBenchmarkResult run_realtime_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg, double seconds, double speed,
-                                          double warm_up);
+                                          double warm_up, RealTimeMode mode = RealTimeMode::LockStep);
 
 }  // namespace ship_lrm::lrm

@@ -6,6 +6,15 @@
 // later. While the LRM thread is still busy, the newest state and the time missed accumulate, and
 // the next job covers them (LrmInflow advances whole LBM steps up to the flight model's time).
 //
+// Two modes:
+// - LockStep: the inflow of a coupling step is the LRM's answer to that step's loads, waited for
+//   within the step's deadline. Only works where one LBM step fits into one flight step.
+// - Pipelined: the LRM runs one job behind. A job posted at step k (that step's loads, the domain
+//   advanced to that step's time) is due m steps later, m = LBM step / flight step (at least 1),
+//   and its inflow serves from then on; in between, the last on-time LRM inflow serves (as the
+//   synchronous model holds its inflow between LBM steps). The LRM thread thus has m flight steps of
+//   wall time per LBM step, at the price of an inflow one LBM interval older. A job late at its due
+//   step is dropped; Pitt-Peters serves until the next job makes its deadline.
 // Simulated-time runs (deterministic) use LrmInflow directly; this class is for paced runs.
 #pragma once
 
@@ -29,10 +38,13 @@ struct RealTimeStats {
   double miss_fraction() const { return steps > 0 ? static_cast<double>(deadline_misses) / steps : 0.0; }
 };
 
+enum class RealTimeMode { LockStep, Pipelined };
+
 class RealTimeLrmInflow final : public rotor::InflowModel {
  public:
-  // budget: wall-clock seconds a coupling step may wait for its LRM inflow after posting the state.
-  RealTimeLrmInflow(const LrmConfig& cfg, double warm_up, double budget);
+  // budget: wall-clock seconds a coupling step may wait for its LRM inflow after posting the state
+  // (pipelined: m times that, counted from the posting).
+  RealTimeLrmInflow(const LrmConfig& cfg, double warm_up, double budget, RealTimeMode mode = RealTimeMode::LockStep);
   ~RealTimeLrmInflow() override;
   std::string name() const override { return "lrm-realtime"; }
   // Synchronous: starts (or keeps) the LRM flow and its warm-up, and the Pitt-Peters fallback.
@@ -42,6 +54,9 @@ class RealTimeLrmInflow final : public rotor::InflowModel {
   bool needs_harmonics() const override { return true; }
 
   RealTimeStats stats() const;
+  RealTimeMode mode() const { return mode_; }
+  // Pipelined: flight steps between posting a job and its due step (known after reset()).
+  int lag_steps() const { return lag_steps_; }
   void set_budget(double seconds) { budget_ = std::chrono::duration<double>(seconds); }
   // A paced loop gives each step an absolute deadline instead (the wall-clock time the step is due);
   // a default time_point returns to the budget.
@@ -51,7 +66,14 @@ class RealTimeLrmInflow final : public rotor::InflowModel {
 
  private:
   void worker();
+  void advance_lockstep(std::unique_lock<std::mutex>& lock, const rotor::RotorDiskState& state);
+  void advance_pipelined(std::unique_lock<std::mutex>& lock, const rotor::RotorDiskState& state, double dt);
+  long post(const rotor::RotorDiskState& state);  // hands the state and the pending time to the LRM thread
+  // Waits for job `id` until `deadline`; true when its result was finished by then.
+  bool collect(std::unique_lock<std::mutex>& lock, long id, std::chrono::steady_clock::time_point deadline);
+  std::chrono::steady_clock::time_point deadline_after(std::chrono::steady_clock::time_point posted, int steps) const;
   std::unique_ptr<LrmInflow> lrm_;
+  RealTimeMode mode_;
   rotor::PittPetersInflow fallback_;
   std::chrono::duration<double> budget_;
   rotor::RotorInflow served_;
@@ -69,6 +91,13 @@ class RealTimeLrmInflow final : public rotor::InflowModel {
   std::exception_ptr error_;
   // time and state not yet handed to the LRM thread (it was busy)
   double pending_dt_ = 0;
+  // pipelined: the job in flight, its due step, and the last LRM inflow that made its deadline
+  double lbm_dt_ = 0;
+  int lag_steps_ = 1;
+  bool in_flight_ = false, have_lrm_ = false;
+  long in_flight_id_ = 0, due_step_ = 0;
+  std::chrono::steady_clock::time_point in_flight_posted_{};
+  rotor::RotorInflow last_lrm_;
   std::thread thread_;
 };
 
