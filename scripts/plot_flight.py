@@ -55,8 +55,11 @@ def plot_trim(data, out, reference):
     fig, axes = plt.subplots(2, 4, figsize=(16, 7.5), sharex=True)
     v = data["speed_m_s"]
     ok = [c > 0.5 for c in data["converged"]]
+    lrm = "pp_total_power_kW" in data  # a coupled LRM trim, written beside Pitt-Peters
     for ax, (key, label) in zip(axes.flat, panels):
-        ax.plot(v, data[key], "-", color="C0", label="ship_lrm, Pitt-Peters")
+        ax.plot(v, data[key], "-o" if lrm else "-", color="C0", label="ship_lrm, LRM inflow" if lrm else "ship_lrm, Pitt-Peters")
+        if lrm and "pp_" + key in data:
+            ax.plot(v, data["pp_" + key], "--", color="C1", label="ship_lrm, Pitt-Peters")
         bad = [(x, y) for x, y, g in zip(v, data[key], ok) if not g]
         if bad:
             ax.plot([b[0] for b in bad], [b[1] for b in bad], "x", color="C3", label="not converged")

@@ -68,28 +68,50 @@ std::function<int()> add_trim_command(CLI::App& app) {
     }
     Helicopter heli(p, std::move(inflow));
     std::ofstream csv(dir / "trim.csv");
+    const bool lrm = o->inflow == "lrm";
     csv << "speed_m_s,converged,residual,iterations,total_power_kW,main_power_kW,tail_power_kW,collective_pct,longitudinal_pct,"
            "lateral_pct,pedal_pct,collective_deg,forward_cyclic_deg,right_cyclic_deg,tail_pitch_deg,pitch_deg,roll_deg,thrust_N,"
-           "induced_velocity_m_s,coning_deg,disk_tilt_forward_deg,disk_tilt_right_deg\n";
-    TrimOptions opt;
+           "induced_velocity_m_s,coning_deg,disk_tilt_forward_deg,disk_tilt_right_deg";
+    if (lrm)
+      csv << ",pp_converged,pp_total_power_kW,pp_collective_pct,pp_longitudinal_pct,pp_lateral_pct,pp_pedal_pct,pp_pitch_deg,pp_roll_deg";
+    csv << "\n";
+    TrimOptions opt, pp_opt;
+    // With the LRM, each speed starts from the Pitt-Peters trim at that speed (thesis 8.5: the coupled
+    // trim beside Pitt-Peters): a cold start or the previous speed's LRM trim is often too far off for
+    // Newton on a flow that is only statistically steady, and the comparison is written alongside.
+    Helicopter pp_heli(p);
     int failed = 0;
     for (double v : speeds) {
       TrimTarget t;
       t.speed = v;
+      TrimResult pp;
+      if (lrm) {
+        pp = trim(pp_heli, t, pp_opt);
+        std::cout << "Pitt-Peters: " << pp.message << "\n";
+        if (pp.converged) {
+          pp_opt.initial_controls = pp.controls;
+          pp_opt.initial_attitude = Vec3(pp.roll, pp.pitch, 0);
+          opt = pp_opt;
+        }
+      }
       const TrimResult r = trim(heli, t, opt);
       std::cout << r.message << "\n";
-      if (r.converged) {
+      if (r.converged && !lrm) {
         opt.initial_controls = r.controls;
         opt.initial_attitude = Vec3(r.roll, r.pitch, 0);
-      } else {
-        ++failed;
       }
+      if (!r.converged) ++failed;
       csv << std::setprecision(6) << v << "," << (r.converged ? 1 : 0) << "," << r.residual << "," << r.iterations << ","
           << r.total_power / 1e3 << "," << r.main_power / 1e3 << "," << r.tail_power / 1e3 << "," << r.controls.collective << ","
           << r.controls.longitudinal << "," << r.controls.lateral << "," << r.controls.pedal << "," << r.angles.main.collective * kDeg
           << "," << r.angles.main.forward * kDeg << "," << r.angles.main.right * kDeg << "," << r.angles.tail * kDeg << ","
           << r.pitch * kDeg << "," << r.roll * kDeg << "," << r.thrust << "," << r.induced_velocity << "," << r.flapping.x() * kDeg << ","
-          << r.flapping.y() * kDeg << "," << r.flapping.z() * kDeg << "\n";
+          << r.flapping.y() * kDeg << "," << r.flapping.z() * kDeg;
+      if (lrm)
+        csv << "," << (pp.converged ? 1 : 0) << "," << pp.total_power / 1e3 << "," << pp.controls.collective << ","
+            << pp.controls.longitudinal << "," << pp.controls.lateral << "," << pp.controls.pedal << "," << pp.pitch * kDeg << ","
+            << pp.roll * kDeg;
+      csv << "\n";
     }
     csv.close();
     std::cout << "wrote " << (dir / "trim.csv").string() << "\n";
