@@ -1,5 +1,5 @@
-// `ship_lrm sweep inflow`: isolated rotor in the LRM domain over a range of speeds against
-// Pitt-Peters and momentum theory (thesis 8.1, figs. 8.1 and 8.2), CSV + PNG.
+// `ship_lrm sweep inflow` and `sweep ground`: isolated rotor in the LRM domain over speeds (against
+// Pitt-Peters and momentum theory, thesis 8.1) or ground heights (thesis 8.2.3), CSV + PNG.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -31,17 +31,48 @@ std::array<lbm::FaceType, 6> faces_named(const std::string& name) {
   throw lbm::ConfigError("unknown face set-up '" + name + "' (thesis, open-sides or open)");
 }
 
-std::vector<double> parse_list(const std::string& text) { return parse_speeds(text); }
+// Options both isolated-rotor sweeps share: the domain, the rotor's load and averaging, the output.
+struct IsolatedRotorOptions {
+  int nodes = 64;
+  double reach = 1.25, thrust = 24525, settle = 4, average = 2;
+  std::string backend = "auto", out;
+  bool overwrite = false, no_plot = false;
+
+  void add_to(CLI::App& cmd, const std::string& outputs) {
+    cmd.add_option("--N", nodes, "lattice nodes per 4R")->check(CLI::Range(16, 512))->capture_default_str();
+    cmd.add_option("--reach", reach, "domain edge / 4R (a >= 1)")->check(CLI::Range(1.0, 8.0))->capture_default_str();
+    cmd.add_option("--thrust", thrust, "N, uniform over the disk")->check(CLI::Range(1.0, 1e6))->capture_default_str();
+    cmd.add_option("--settle", settle, "s simulated before averaging")->check(CLI::Range(0.0, 600.0))->capture_default_str();
+    cmd.add_option("--average", average, "s averaged")->check(CLI::Range(0.01, 600.0))->capture_default_str();
+    cmd.add_option("--backend", backend, "cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
+    cmd.add_option("--out", out, "output directory (" + outputs + ")")->required();
+    cmd.add_flag("--overwrite", overwrite, "replace existing output files");
+    cmd.add_flag("--no-plot", no_plot, "write the CSV only");
+  }
+  lrm::LrmConfig config() const {
+    lrm::LrmConfig cfg;
+    cfg.nodes = nodes;
+    cfg.reach = reach;
+    cfg.backend = lbm::parse_backend(backend);
+    return cfg;
+  }
+  lrm::IsolatedRotorCase rotor_case(double speed) const {
+    lrm::IsolatedRotorCase c;
+    c.speed = speed;
+    c.thrust = thrust;
+    c.settle = settle;
+    c.average = average;
+    return c;
+  }
+};
 
 std::function<int()> add_ground_sweep(CLI::App& sweep) {
   auto* ground = sweep.add_subcommand(
       "ground",
       "Isolated rotor above a ground plane: v_mean / v_mean(out of ground effect) against Cheeseman-Bennett and Hayden (thesis 8.2.3)");
-  struct Opts {
-    std::string mode = "hover", heights, speeds = "0,3,6,9,12,15", faces = "thesis", backend = "auto", out;
-    int nodes = 64;
-    double reach = 1.25, thrust = 24525, settle = 4, average = 2;
-    bool overwrite = false, no_plot = false, fuselage = false;
+  struct Opts : IsolatedRotorOptions {
+    std::string mode = "hover", heights, speeds = "0,3,6,9,12,15", faces = "thesis";
+    bool fuselage = false;
   };
   auto o = std::make_shared<Opts>();
   ground->add_flag("--fuselage", o->fuselage, "add the Bo 105-like fuselage (walls.hpp) below the disk");
@@ -55,35 +86,20 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
   ground->add_option("--faces", o->faces, "face set-up: thesis (velocity front/sides), open-sides, open (impedance everywhere)")
       ->check(CLI::IsMember({"thesis", "open-sides", "open"}))
       ->capture_default_str();
-  ground->add_option("--N", o->nodes, "lattice nodes per 4R")->check(CLI::Range(16, 512))->capture_default_str();
-  ground->add_option("--reach", o->reach, "domain edge / 4R (a >= 1)")->check(CLI::Range(1.0, 8.0))->capture_default_str();
-  ground->add_option("--thrust", o->thrust, "N, uniform over the disk")->check(CLI::Range(1.0, 1e6))->capture_default_str();
-  ground->add_option("--settle", o->settle, "s simulated before averaging")->check(CLI::Range(0.0, 600.0))->capture_default_str();
-  ground->add_option("--average", o->average, "s averaged")->check(CLI::Range(0.01, 600.0))->capture_default_str();
-  ground->add_option("--backend", o->backend, "cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
-  ground->add_option("--out", o->out, "output directory (ground_sweep.csv, .png)")->required();
-  ground->add_flag("--overwrite", o->overwrite, "replace existing output files");
-  ground->add_flag("--no-plot", o->no_plot, "write the CSV only");
+  o->add_to(*ground, "ground_sweep.csv, .png");
   return [o, ground]() -> int {
     if (!ground->parsed()) return -1;
     const bool hover = o->mode == "hover";
-    const auto heights = parse_list(o->heights.empty() ? (hover ? "0.5,0.6,0.7,0.8,1,1.25,1.5,2" : "0.5,0.6,0.8,1") : o->heights);
+    const auto heights = parse_speeds(o->heights.empty() ? (hover ? "0.5,0.6,0.7,0.8,1,1.25,1.5,2" : "0.5,0.6,0.8,1") : o->heights);
     const auto speeds = hover ? std::vector<double>{0.0} : parse_speeds(o->speeds);
     for (double h : heights)
       if (!(h > 0)) throw lbm::ConfigError("--heights: z/R must be > 0, got " + std::to_string(h));
-    lrm::LrmConfig cfg;
-    cfg.nodes = o->nodes;
-    cfg.reach = o->reach;
+    lrm::LrmConfig cfg = o->config();
     cfg.faces = faces_named(o->faces);
-    cfg.backend = lbm::parse_backend(o->backend);
     const fs::path dir(o->out);
     prepare_output(dir, {"ground_sweep.csv", "ground_sweep.png"}, o->overwrite);
     const auto case_for = [&](double v, double z_over_R) {
-      lrm::IsolatedRotorCase c;
-      c.speed = v;
-      c.thrust = o->thrust;
-      c.settle = o->settle;
-      c.average = o->average;
+      lrm::IsolatedRotorCase c = o->rotor_case(v);
       c.ground_height = z_over_R * cfg.radius;  // 0: out of ground effect
       c.fuselage = o->fuselage;
       return c;
@@ -134,31 +150,17 @@ std::function<int()> add_sweep_command(CLI::App& app) {
   sweep->require_subcommand(1);
   auto* inflow =
       sweep->add_subcommand("inflow", "Isolated rotor, uniform thrust, zero incidence: LRM inflow against Pitt-Peters (thesis 8.1)");
-  struct Opts {
-    int nodes = 64;
-    double reach = 1.25, thrust = 24525, settle = 4, average = 2;
-    std::string speeds = "0:5:65", backend = "auto", out;
-    bool overwrite = false, no_plot = false;
+  struct Opts : IsolatedRotorOptions {
+    std::string speeds = "0:5:65";
   };
   auto o = std::make_shared<Opts>();
-  inflow->add_option("--N", o->nodes, "lattice nodes per 4R")->check(CLI::Range(16, 512))->capture_default_str();
-  inflow->add_option("--reach", o->reach, "domain edge / 4R (a >= 1)")->check(CLI::Range(1.0, 8.0))->capture_default_str();
   inflow->add_option("--speeds", o->speeds, "speeds in m/s: start:step:stop or a comma list")->capture_default_str();
-  inflow->add_option("--thrust", o->thrust, "N, uniform over the disk")->check(CLI::Range(1.0, 1e6))->capture_default_str();
-  inflow->add_option("--settle", o->settle, "s simulated before averaging")->check(CLI::Range(0.0, 600.0))->capture_default_str();
-  inflow->add_option("--average", o->average, "s averaged")->check(CLI::Range(0.01, 600.0))->capture_default_str();
-  inflow->add_option("--backend", o->backend, "cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
-  inflow->add_option("--out", o->out, "output directory (inflow_sweep.csv, .png)")->required();
-  inflow->add_flag("--overwrite", o->overwrite, "replace existing output files");
-  inflow->add_flag("--no-plot", o->no_plot, "write the CSV only");
+  o->add_to(*inflow, "inflow_sweep.csv, .png");
   auto run_ground = add_ground_sweep(*sweep);
   return [o, inflow, run_ground]() -> int {
     if (!inflow->parsed()) return run_ground();
     const auto speeds = parse_speeds(o->speeds);
-    lrm::LrmConfig cfg;
-    cfg.nodes = o->nodes;
-    cfg.reach = o->reach;
-    cfg.backend = lbm::parse_backend(o->backend);
+    const lrm::LrmConfig cfg = o->config();
     const fs::path dir(o->out);
     prepare_output(dir, {"inflow_sweep.csv", "inflow_sweep.png"}, o->overwrite);
     const auto case_config = [&](double v) { return lrm::config_for_stream(cfg, v); };
@@ -171,12 +173,7 @@ std::function<int()> add_sweep_command(CLI::App& app) {
            "momentum_theory_m_s,hover_momentum_theory_m_s,mean_over_pitt_peters,N,reach,cells_per_edge,time_step_s,steps,wall_s\n";
     const double vh = rotor::hover_induced_velocity(o->thrust, cfg.density, cfg.radius);
     for (double v : speeds) {
-      lrm::IsolatedRotorCase c;
-      c.speed = v;
-      c.thrust = o->thrust;
-      c.settle = o->settle;
-      c.average = o->average;
-      const auto r = lrm::run_isolated_rotor(case_config(v), c);
+      const auto r = lrm::run_isolated_rotor(case_config(v), o->rotor_case(v));
       std::cout << std::fixed << std::setprecision(3) << "V = " << v << " m/s: LRM mean " << r.induced_mean << " m/s, Pitt-Peters "
                 << r.pitt_peters_mean << " (ratio " << r.induced_mean / r.pitt_peters_mean << "); cosine " << r.inflow.cosine.z() << " vs "
                 << r.pitt_peters_cosine << "; " << r.steps << " steps in " << std::setprecision(1) << r.wall_seconds << " s\n";
