@@ -67,6 +67,11 @@ class CpuSolver final : public Solver {
     sync_view();
   }
 
+  void do_set_populations(const std::vector<float>& g) override {
+    const std::size_t n = lattice_.cells();
+    for (int i = 0; i < Q; ++i)
+      for (std::size_t c = 0; c < n; ++c) pop(view_, i, c) = store_pop(g[i * n + c]);
+  }
   std::vector<float> populations() override {
     const std::size_t n = lattice_.cells();
     std::vector<float> out(Q * n);

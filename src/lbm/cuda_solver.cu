@@ -239,6 +239,14 @@ class CudaSolver final : public Solver {
     check(cudaGetLastError(), "cell forces");
   }
 
+  void do_set_populations(const std::vector<float>& g) override {
+    std::vector<pop_t> h;
+    g_.download(h);  // keeps the padding between the population planes
+    const std::size_t n = lattice_.cells();
+    for (int i = 0; i < Q; ++i)
+      for (std::size_t c = 0; c < n; ++c) h[i * view_.pstride + c] = store_pop(g[i * n + c]);
+    g_.upload(h);
+  }
   std::vector<float> populations() override {
     std::vector<pop_t> h;
     g_.download(h);

@@ -91,6 +91,18 @@ void Solver::initialize(const std::vector<float>& rho, const std::vector<float>&
   steps_ = 0;
 }
 
+void Solver::restore(long steps, const std::vector<float>& g) {
+  if (steps < 0) throw ConfigError("restore: negative step count");
+  if (g.size() != static_cast<std::size_t>(d3q19::Q) * lattice_.cells())
+    throw ConfigError("restore: expected " + std::to_string(d3q19::Q) + " populations per cell for this lattice, got " +
+                      std::to_string(g.size()));
+  for (float v : g)
+    if (!std::isfinite(v)) throw ConfigError("restore: the populations are not finite");
+  if (reference_change_pending_) clear_reference_change();
+  do_set_populations(g);
+  steps_ = steps;
+}
+
 void Solver::step(long n) {
   const int interval = lattice_.config().guard_interval;
   for (long k = 0; k < n; ++k) {

@@ -1,6 +1,8 @@
 // The LRM fluid domain (see domain.hpp).
 #include "ship_lrm/lrm/domain.hpp"
 
+#include "ship_lrm/lbm/refill.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -132,58 +134,10 @@ void LrmDomain::rebuild(bool carry_flow) {
         else
           lat.set_wall(i, j, k);
       }
-  lbm::Fields old;
-  if (carry_flow && solver_) old = solver_->fields();
-  const auto was_wall = [&](std::size_t c) {
-    return lbm::is_wall(static_cast<lbm::CellType>(solver_->lattice().types()[c] & ~lbm::kGeneralBit));
-  };
-  std::vector<float> rho, u;
-  if (!old.rho.empty()) {
-    rho = old.rho;
-    u = old.u;
-    // Refill the cells that were walls, front by front: a cell takes the mean state of its neighbours
-    // known so far (fluid before, or refilled in an earlier pass), so a body that moved by several
-    // cells at once is filled from the fluid inwards. Cells still inside a wall are filled too
-    // (their values are unused).
-    std::vector<char> known(old.rho.size());
-    std::vector<std::size_t> todo;
-    for (std::size_t c = 0; c < known.size(); ++c) {
-      known[c] = !was_wall(c);
-      if (!known[c]) todo.push_back(c);
-    }
-    while (!todo.empty()) {
-      std::vector<std::size_t> filled, left;
-      for (std::size_t c : todo) {
-        const int i = static_cast<int>(c % edge_), j = static_cast<int>((c / edge_) % edge_);
-        const int k = static_cast<int>(c / (static_cast<std::size_t>(edge_) * edge_));
-        double r = 0, n = 0;
-        Vec3 v = Vec3::Zero();
-        for (int q = 1; q < lbm::d3q19::Q; ++q) {
-          const int a = i + lbm::d3q19::cx(q), b = j + lbm::d3q19::cy(q), e = k + lbm::d3q19::cz(q);
-          if (a < 0 || b < 0 || e < 0 || a >= edge_ || b >= edge_ || e >= edge_) continue;
-          const std::size_t nb = lat.index(a, b, e);
-          if (!known[nb]) continue;
-          r += rho[nb];
-          v += Vec3(u[3 * nb], u[3 * nb + 1], u[3 * nb + 2]);
-          ++n;
-        }
-        if (n == 0) {
-          left.push_back(c);
-          continue;
-        }
-        rho[c] = static_cast<float>(r / n);
-        for (int d = 0; d < 3; ++d) u[3 * c + d] = static_cast<float>(v[d] / n);
-        filled.push_back(c);
-      }
-      if (filled.empty()) break;  // no fluid at all: leave the rest at rest
-      for (std::size_t c : filled) known[c] = 1;
-      todo.swap(left);
-    }
-    for (std::size_t c : todo) {
-      rho[c] = 1.0f;
-      u[3 * c] = u[3 * c + 1] = u[3 * c + 2] = 0.0f;
-    }
-  }
+  lbm::Fields carried;
+  if (carry_flow && solver_) carried = lbm::carry_flow(solver_->lattice(), solver_->fields());
+  const std::vector<float>& rho = carried.rho;
+  const std::vector<float>& u = carried.u;
   solver_ = lbm::make_solver(std::move(lat), cfg_.backend);
   if (!disk_forces_.empty()) solver_->set_cell_forces(disk_cells_, disk_forces_);
   if (motion_set_) {

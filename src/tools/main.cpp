@@ -8,6 +8,7 @@
 #include "ship_lrm/lbm/solver.hpp"
 #ifdef SHIP_LRM_HAVE_FLIGHT
 #include "ship_lrm/flight/parameters.hpp"
+#include "ship_lrm/wake/wake_table.hpp"
 #endif
 
 int main(int argc, char** argv) {
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
   actions.push_back(ship_lrm::tools::add_trim_command(app));
   actions.push_back(ship_lrm::tools::add_doublet_command(app));
   actions.push_back(ship_lrm::tools::add_sweep_command(app));
+  actions.push_back(ship_lrm::tools::add_wake_command(app));
 #endif
   try {
     app.parse(argc, argv);
@@ -43,6 +45,9 @@ int main(int argc, char** argv) {
     return 3;
 #ifdef SHIP_LRM_HAVE_FLIGHT
   } catch (const ship_lrm::flight::ParameterError& e) {
+    std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
+    return 2;
+  } catch (const ship_lrm::wake::TableError& e) {
     std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
     return 2;
 #endif

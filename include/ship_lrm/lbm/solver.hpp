@@ -82,6 +82,10 @@ class Solver {
   void check_divergence();
   // Raw populations (shifted, g = f - w) for tests: Q * cells, SoA.
   virtual std::vector<float> populations() = 0;
+  // Put back populations from populations() taken after `steps` steps (a checkpoint): the stored
+  // layout depends on the step parity, so the step count comes back with them. Impedance outlets
+  // restart from their reference flow. Throws ConfigError for a wrong size or non-finite values.
+  void restore(long steps, const std::vector<float>& g);
   // Wait for queued device work (timing); no-op on the CPU.
   virtual void synchronize() {}
 
@@ -91,6 +95,7 @@ class Solver {
   virtual void do_step(bool odd) = 0;
   virtual void do_fields(bool next_odd, Fields& out) = 0;
   virtual void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) = 0;
+  virtual void do_set_populations(const std::vector<float>& g) = 0;  // validated, populations() layout
   virtual void sync_view() = 0;                                               // after view_ parameters changed on the host
   virtual void sync_walls() {}                                                // after lattice_'s wall motions changed (device copy)
   virtual void do_set_boundary_values(const std::vector<float>& values) = 0;  // validated, 4 per cell

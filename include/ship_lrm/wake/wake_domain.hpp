@@ -1,0 +1,115 @@
+// The ship-wake domain (issue 5; thesis 6.2): a lattice-Boltzmann box around the ship, 4 l long,
+// 1.5 l wide and 0.88 l high (l: ship length), the stem at 3.25 l from the outflow, the waterline
+// 0.088 l above the floor, the ship centred across. Inflow at the bow end (velocity inlet, the wind
+// from ahead), outflow at the stern end (pressure outlet), slip walls at the sides and the top,
+// no-slip sea surface and hull, Smagorinsky s = 0.025.
+//
+// Frame: the thesis fixes the grid to the moving ship (ALE). Here the grid stays in the ship's mean
+// frame (moving with its mean speed, not with its heave, roll and pitch), and the hull moves through
+// it as a moving no-slip wall (Ladd's moving bounce-back), re-voxelised when it has moved by a
+// quarter cell, with the refill of lbm::carry_flow. The sea surface, the faces and the table's grid
+// then never move: a table point is a fixed point of the mean frame, and the wake server needs no
+// ship attitude to look it up (the LRM gets the ship's walls from the ship geometry and motion).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ship_lrm/lbm/solver.hpp"
+#include "ship_lrm/lbm/units.hpp"
+#include "ship_lrm/wake/ship_geometry.hpp"
+#include "ship_lrm/wake/ship_motion.hpp"
+#include "ship_lrm/wake/wake_table.hpp"
+
+namespace ship_lrm::wake {
+
+struct WakeConfig {
+  int cells_per_length = 48;      // N_ship: cells per ship length (the thesis converges at 364)
+  double wind = 20.58;            // m/s, wind over the deck from ahead (thesis 9.1: 20.58 full scale, 7: 9.77 model)
+  double lattice_wind = 0.1;      // the wind in lattice units (Mach 0.17); the thesis' 0.3 c_s at 60 / 80 m/s gives 0.028 / 0.045
+  double viscosity = 1.46072e-4;  // m^2/s (thesis tables 6.2, 6.3)
+  double density = 1.1934;        // kg/m^3 (1.225 for the model, table 6.2)
+  double smagorinsky = 0.025;     // thesis 6.2
+  lbm::Backend backend = lbm::Backend::Auto;
+  // domain, in ship lengths (thesis 6.2)
+  double domain_length = 4.0, domain_width = 1.5, domain_height = 0.88;
+  double stem_position = 3.25;  // stem / waterline crossing from the outflow face
+  double sea_depth = 0.088;     // waterline above the floor
+  // tabulated region (thesis 6.3): x from the outflow face to the stem, this wide about the midline,
+  // from this far below the top down to the floor
+  double table_width = 0.6, table_top = 0.24;
+  double revoxelise_cells = 0.25;  // hull displacement (cells) that triggers a re-voxelisation
+  // Sea surface: slip (default) or no-slip (the thesis). A uniform inflow meeting a no-slip floor at
+  // the inlet is a singular corner; at our resolutions (tau - 1/2 ~ 1e-4) it went unstable there
+  // (model case, N = 48, after 5000 steps). The wind over the sea is an atmospheric profile, not a
+  // boundary layer grown from the inlet; the slip surface keeps the inflow as given.
+  bool no_slip_sea = false;
+};
+
+class ShipWakeDomain {
+ public:
+  // Throws lbm::ConfigError for bad values, GeometryError when the ship does not fit the domain.
+  ShipWakeDomain(const WakeConfig& cfg, std::shared_ptr<const ShipGeometry> ship, std::shared_ptr<const ShipMotion> motion);
+  const WakeConfig& config() const { return cfg_; }
+  const lbm::UnitConverter& units() const { return units_; }
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+  int nz() const { return nz_; }
+  std::size_t cells() const { return static_cast<std::size_t>(nx_) * ny_ * nz_; }
+  double time() const { return steps_ * units_.dt(); }
+  long steps() const { return steps_; }
+  std::size_t rebuilds() const { return rebuilds_; }
+  std::size_t ship_cells() const { return ship_cells_; }
+  lbm::Solver& solver() { return *solver_; }
+  // Ship-frame position (mean pose) of lattice node (i, j, k).
+  Vec3 position(int i, int j, int k) const;
+  // Advance n steps; the hull moves with the ship motion.
+  void step(long n = 1);
+
+  // The tabulated region (grid = lattice nodes) and one frame of it in physical units: velocity (3 per
+  // point) in m/s in the mean frame, density in kg/m^3; inside solids the body's velocity and the
+  // free density.
+  WakeTableInfo table_info() const;
+  void table_frame(std::vector<float>& velocity, std::vector<float>& density);
+  // The centre plane y = 0: velocity (m/s, 3 per point, x fastest then z) and a solid flag.
+  struct Plane {
+    int nx = 0, nz = 0;
+    std::vector<float> u;
+    std::vector<std::uint8_t> solid;
+    std::vector<double> x, z;  // ship-frame coordinates of the columns and rows
+  };
+  Plane centre_plane();
+
+  // Checkpoint: the step count, the pose the walls were voxelised at and the populations. restore()
+  // re-voxelises at that pose and puts the populations back (ConfigError when they do not fit).
+  struct State {
+    long steps = 0;
+    long solver_steps = 0;  // since the lattice was last built (the population layout's parity)
+    double voxel_time = 0;
+    std::vector<float> populations;
+  };
+  State state();
+  void restore(const State& s);
+
+ private:
+  WakeConfig cfg_;
+  std::shared_ptr<const ShipGeometry> ship_;
+  std::shared_ptr<const ShipMotion> motion_;
+  lbm::UnitConverter units_;
+  int nx_, ny_, nz_;
+  Vec3 origin_;  // ship-frame position of node (0, 0, 0)
+  long steps_ = 0;
+  double voxel_time_ = 0;
+  std::size_t rebuilds_ = 0, ship_cells_ = 0;
+  std::array<int, 3> box_lo_{}, box_hi_{};  // lattice box the hull can reach
+  std::vector<std::uint8_t> owner_;        // 0 fluid, 1 sea, 2 ship
+  std::unique_ptr<lbm::Solver> solver_;
+  std::vector<std::uint8_t> voxelise(double t) const;
+  void rebuild(double t, bool carry);
+  lbm::WallMotion hull_motion(double t) const;
+};
+
+// Lattice set-up of a wake domain (for the bench and the tests): units from the config and ship length.
+lbm::UnitConverter wake_units(const WakeConfig& cfg, double ship_length);
+
+}  // namespace ship_lrm::wake

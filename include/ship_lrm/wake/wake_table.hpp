@@ -1,0 +1,112 @@
+// The ship-wake table (issue 5; thesis 6.3): the air wake of a ship on a regular grid, one frame per
+// interval, in HDF5 (one chunk per frame; float16 or float32) with an XDMF side-car that ParaView
+// opens as a time series. The reader extracts the window around an LRM domain and interpolates
+// trilinearly in space and linearly in time; it holds only that window of two frames in memory.
+//
+// Layout (format version 1):
+//   /velocity  [frames][nz][ny][nx][3]  m/s, mean frame (ship_motion.hpp), x forward, y starboard, z down
+//   /density   [frames][nz][ny][nx]     kg/m^3
+//   attributes of / : format_version, generator, origin[3] (m, ship frame of the mean pose, grid point
+//     0), spacing (m), shape[3] (nx, ny, nz), frame_interval (s), start_time (s, time of frame 0),
+//     free_stream[3] (m/s), free_density (kg/m^3), ship, scale, motion, units ("m, s, m/s, kg/m^3"),
+//     frame ("mean ship frame, FRD, origin at the hangar-door base")
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ship_lrm::wake {
+
+// A missing, truncated or invalid table file, a wrong format version or units.
+class TableError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+constexpr int kWakeTableFormatVersion = 1;
+constexpr const char* kWakeTableUnits = "m, s, m/s, kg/m^3";
+
+struct WakeTableInfo {
+  std::array<double, 3> origin{0, 0, 0};  // m, grid point (0, 0, 0)
+  double spacing = 1;                     // m
+  std::array<int, 3> shape{0, 0, 0};      // nx, ny, nz
+  double frame_interval = 0.02;           // s
+  double start_time = 0;                  // s, time of frame 0
+  std::array<double, 3> free_stream{0, 0, 0};
+  double free_density = 1.225;
+  std::string ship, scale, motion;
+  bool half_precision = true;  // float16 on disk
+  int frames = 0;              // written so far (reader: in the file)
+  std::size_t points() const { return static_cast<std::size_t>(shape[0]) * shape[1] * shape[2]; }
+  double end_time() const { return start_time + (frames - 1) * frame_interval; }
+};
+
+// Writes frames one after the other; each append is flushed, so a stopped run leaves a valid table
+// of the frames written so far (the side-car is rewritten with them).
+class WakeTableWriter {
+ public:
+  // Creates `path` (replacing it) or, with resume, opens it and keeps its first `keep_frames` frames.
+  WakeTableWriter(const std::string& path, const WakeTableInfo& info, bool resume = false, int keep_frames = 0);
+  ~WakeTableWriter();
+  WakeTableWriter(const WakeTableWriter&) = delete;
+  WakeTableWriter& operator=(const WakeTableWriter&) = delete;
+  // velocity: 3 per point (x fastest, then y, then z), density: 1 per point.
+  void append(const std::vector<float>& velocity, const std::vector<float>& density);
+  // Extra float datasets (statistics), written under /statistics/<name>.
+  void write_statistic(const std::string& name, const std::vector<float>& values, const std::vector<int>& dims);
+  int frames() const { return info_.frames; }
+  const WakeTableInfo& info() const { return info_; }
+  void close();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  WakeTableInfo info_;
+  std::string path_;
+  void write_xdmf() const;
+};
+
+// Velocity and density at points; outside the table's box the free stream (documented choice: the
+// table covers the wake, the air beyond it is undisturbed). Times before the first frame use the
+// first, after the last the last (see covers()).
+struct WakeSample {
+  std::array<float, 3> u;
+  float rho;
+};
+
+class WakeTable {
+ public:
+  // Opens and validates (TableError naming what is wrong). `window_points` bounds the memory: the
+  // cached window of two frames holds at most this many grid points per frame.
+  explicit WakeTable(const std::string& path, std::size_t window_points = 4u << 20);
+  ~WakeTable();
+  WakeTable(const WakeTable&) = delete;
+  WakeTable& operator=(const WakeTable&) = delete;
+  const WakeTableInfo& info() const { return info_; }
+  bool covers(double t) const { return t >= info_.start_time && t <= info_.end_time(); }
+  // Samples at n points (xyz interleaved, m, mean frame) at time t. All points must lie in a box that
+  // fits the window (else TableError); points outside the table get the free stream.
+  void sample(double t, const std::vector<double>& xyz, std::vector<WakeSample>& out);
+  // One frame's grid values (tests, plots): velocity 3 per point and density.
+  void read_frame(int frame, std::vector<float>& velocity, std::vector<float>& density) const;
+  std::size_t window_loads() const { return loads_; }  // hyperslab reads so far
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  WakeTableInfo info_;
+  std::size_t max_points_;
+  std::size_t loads_ = 0;
+  struct Window {
+    int frame = -1;
+    std::array<int, 3> lo{0, 0, 0}, n{0, 0, 0};
+    std::vector<float> u, rho;
+  };
+  Window w_[2];
+  const Window& window(int frame, const std::array<int, 3>& lo, const std::array<int, 3>& hi);
+};
+
+}  // namespace ship_lrm::wake

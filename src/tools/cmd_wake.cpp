@@ -1,0 +1,127 @@
+// `ship_lrm wake`: the ship-wake precompute (issue 5), its presets, the ship mesh export, and the
+// centre-plane plots of thesis figs. 7.2, 7.3 and 7.6 (scripts/plot_wake.py).
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "commands.hpp"
+#include "ship_lrm/flight/parameters.hpp"
+#include "ship_lrm/wake/wake_precompute.hpp"
+
+namespace ship_lrm::tools {
+namespace fs = std::filesystem;
+namespace {
+
+std::atomic<bool> g_stop{false};
+extern "C" void on_signal(int) { g_stop = true; }
+
+void progress_bar(const wake::PrecomputeOptions::Progress& p) {
+  const int width = 30, done = static_cast<int>(p.fraction * width);
+  std::fprintf(stderr, "\r[%-*s] %5.1f %%  t = %7.2f s  %d frames  %6.1f MLUPS  ETA %5.0f s ", width, std::string(done, '#').c_str(),
+               100 * p.fraction, p.sim_time, p.frames, p.mlups, p.eta_seconds);
+  std::fflush(stderr);
+}
+
+}  // namespace
+
+std::string default_wake_table() {
+  if (const char* p = std::getenv("SHIP_LRM_WAKE_CACHE")) return std::string(p) + "/wake_default_v1.h5";
+  const char* home = std::getenv("HOME");
+  return std::string(home ? home : ".") + "/.cache/ship_lrm/wake_default_v1.h5";
+}
+
+std::function<int()> add_wake_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("wake", "Precompute a ship air wake into a wake table (HDF5 + XDMF), with centre-plane statistics");
+  auto opt = std::make_shared<wake::PrecomputeOptions>();
+  auto preset = std::make_shared<std::string>();
+  auto backend = std::make_shared<std::string>("auto");
+  auto mesh = std::make_shared<std::string>();
+  auto flags = std::make_shared<std::array<bool, 4>>();  // overwrite, no-resume, float32, no-plot
+  cmd->add_option("--preset", *preset, "default (the approach scenario's table; cached under ~/.cache/ship_lrm when --out is not given) or tiny");
+  cmd->add_option("--ship", opt->ship, "natogd, sfs2 or FILE.stl (full scale, metres, ship frame: x forward, z down)");
+  cmd->add_option("--scale", opt->scale, "model (1/50, the NRC wind-tunnel model) or full");
+  cmd->add_option("--N", opt->domain.cells_per_length, "cells per ship length (thesis: converged at 364)");
+  cmd->add_option("--motion", opt->motion, "static, pitch, heave, approach or FILE.csv (time_s,heave_m,roll_deg,pitch_deg)");
+  cmd->add_option("--wind", opt->domain.wind, "wind over the deck from ahead, m/s (model case 9.77, approach 20.58)");
+  cmd->add_option("--startup", opt->startup, "start-up before the first frame, s (default: the wind's time across the domain)");
+  cmd->add_option("--duration", opt->duration, "seconds of frames");
+  cmd->add_option("--interval", opt->frame_interval, "seconds between frames (thesis: 0.02)");
+  cmd->add_option("--stats-interval", opt->stats_interval, "seconds between centre-plane samples (default: the frame interval)");
+  cmd->add_option("--backend", *backend, "cpu, cuda or auto");
+  cmd->add_option("--smagorinsky", opt->domain.smagorinsky, "Smagorinsky constant s (thesis 6.2: 0.025)");
+  cmd->add_flag("--no-slip-sea", opt->domain.no_slip_sea, "no-slip sea surface (the thesis) instead of slip");
+  cmd->add_option("--out", opt->out, "wake table FILE.h5 (FILE.xdmf, FILE_centre_plane.csv/.png beside it)");
+  cmd->add_option("--checkpoint-every", opt->checkpoint_seconds, "wall-clock seconds between checkpoints (FILE.h5.ckpt)");
+  cmd->add_option("--mesh", *mesh, "also write the ship geometry as a binary STL (for rviz / ParaView)");
+  cmd->add_flag("--overwrite", (*flags)[0], "replace an existing table");
+  cmd->add_flag("--no-resume", (*flags)[1], "ignore a checkpoint (needs --overwrite when the table exists)");
+  cmd->add_flag("--float32", (*flags)[2], "store float32 instead of float16");
+  cmd->add_flag("--no-plot", (*flags)[3], "skip the PNG plots");
+  return [=]() -> int {
+    if (!cmd->parsed()) return -1;
+    wake::PrecomputeOptions o = *opt;
+    if (!preset->empty()) {
+      // the preset's values, then whatever was given explicitly
+      wake::PrecomputeOptions p = wake::preset(*preset);
+      const auto given = [&](const char* name) { return cmd->count(name) > 0; };
+      if (!given("--ship")) o.ship = p.ship;
+      if (!given("--scale")) o.scale = p.scale;
+      if (!given("--N")) o.domain.cells_per_length = p.domain.cells_per_length;
+      if (!given("--motion")) o.motion = p.motion;
+      if (!given("--wind")) o.domain.wind = p.domain.wind;
+      if (!given("--startup")) o.startup = p.startup;
+      if (!given("--duration")) o.duration = p.duration;
+      if (!given("--interval")) o.frame_interval = p.frame_interval;
+      o.half_precision = p.half_precision;
+      if (o.out.empty() && *preset == "default") o.out = default_wake_table();
+    }
+    if (o.out.empty()) throw CLI::ValidationError("--out", "give the table file (FILE.h5)");
+    o.domain.density = o.scale == "model" ? 1.225 : 1.1934;  // thesis tables 6.2, 6.3
+    o.domain.backend = lbm::parse_backend(*backend);
+    if ((*flags)[2]) o.half_precision = false;
+    const std::string ckpt = o.out + ".ckpt";
+    o.resume = !(*flags)[1];
+    if (fs::exists(o.out) && !(o.resume && fs::exists(ckpt)) && !(*flags)[0]) {
+      if (!preset->empty() && *preset == "default" && o.out == default_wake_table()) {
+        std::cout << "the default wake table is cached: " << o.out << "\n";
+        return 0;
+      }
+      throw std::runtime_error(o.out + " exists; pass --overwrite to replace it");
+    }
+    if (!(*flags)[1] && fs::exists(ckpt)) std::cout << "resuming from the checkpoint " << ckpt << "\n";
+    if (!mesh->empty()) {
+      wake::write_stl(*mesh, wake::make_ship(o.ship, o.scale)->mesh(), "ship_lrm " + o.ship);
+      std::cout << "wrote " << *mesh << "\n";
+    }
+    o.stop = &g_stop;
+    o.progress = progress_bar;
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGTERM, on_signal);
+    const wake::PrecomputeResult r = wake::precompute_wake(o);
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+    std::fprintf(stderr, "\n");
+    std::cout << "ship " << o.ship << " (" << o.scale << "), motion " << o.motion << ", wind " << o.domain.wind << " m/s, N = "
+              << o.domain.cells_per_length << ": " << r.cells << " cells, dx = " << r.dx << " m, dt = " << r.dt << " s\n"
+              << r.steps << " steps (" << r.simulated << " s simulated) in " << r.wall_seconds << " s wall clock, " << r.mlups << " MLUPS, "
+              << r.frames << " frames, " << r.rebuilds << " hull re-voxelisations, " << r.stats.samples << " centre-plane samples\n";
+    if (r.interrupted) {
+      std::cout << "stopped: checkpoint " << ckpt << " written; run the same command again to resume\n";
+      return 130;
+    }
+    std::cout << "wrote " << r.table << ", " << r.xdmf << ", " << r.centre_plane_csv << "\n";
+    if (!(*flags)[3]) {
+      const fs::path png = fs::path(r.centre_plane_csv).replace_extension(".png");
+      const std::string cmdline = "/usr/bin/env python3 '" + flight::shipped_directory("SHIP_LRM_SCRIPTS_DIR", "scripts") +
+                                  "/plot_wake.py' plane '" + r.centre_plane_csv + "' '" + png.string() + "'";
+      if (std::system(cmdline.c_str()) != 0)
+        std::cerr << "ship_lrm: warning: plotting failed (needs python3 with matplotlib); the CSV " << r.centre_plane_csv << " is complete\n";
+    }
+    return 0;
+  };
+}
+
+}  // namespace ship_lrm::tools

@@ -1,0 +1,252 @@
+// The ship-wake domain (see wake_domain.hpp).
+#include "ship_lrm/wake/wake_domain.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ship_lrm/lbm/refill.hpp"
+
+namespace ship_lrm::wake {
+namespace {
+
+constexpr std::uint8_t kFluid = 0, kSea = 1, kShip = 2;
+
+std::array<Vec3, 8> mesh_box(const ShipGeometry& ship) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const auto& t : ship.mesh())
+    for (const auto& v : t.v) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+  std::array<Vec3, 8> c;
+  for (int k = 0; k < 8; ++k) c[k] = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+  return c;
+}
+
+}  // namespace
+
+lbm::UnitConverter wake_units(const WakeConfig& cfg, double ship_length) {
+  if (cfg.cells_per_length < 16) throw lbm::ConfigError("wake: N must be >= 16 cells per ship length, got " + std::to_string(cfg.cells_per_length));
+  if (!(cfg.wind > 0) || !std::isfinite(cfg.wind)) throw lbm::ConfigError("wake: the wind must be > 0 m/s");
+  if (!(ship_length > 0)) throw lbm::ConfigError("wake: the ship has no length");
+  lbm::UnitReference r;
+  r.length = ship_length;
+  r.nodes = cfg.cells_per_length + 1;  // dx = l / N
+  r.velocity = cfg.wind;
+  r.lattice_velocity = cfg.lattice_wind;
+  r.viscosity = cfg.viscosity;
+  r.density = cfg.density;
+  return lbm::UnitConverter(r);  // ConfigError beyond the Mach limit
+}
+
+ShipWakeDomain::ShipWakeDomain(const WakeConfig& cfg, std::shared_ptr<const ShipGeometry> ship, std::shared_ptr<const ShipMotion> motion)
+    : cfg_(cfg), ship_(std::move(ship)), motion_(std::move(motion)), units_(wake_units(cfg, ship_ ? ship_->datum().length : 0.0)) {
+  if (!ship_ || !motion_) throw lbm::ConfigError("wake: no ship or no motion");
+  if (!(cfg.smagorinsky >= 0)) throw lbm::ConfigError("wake: the Smagorinsky constant must be >= 0");
+  const double N = cfg.cells_per_length, l = ship_->datum().length;
+  nx_ = static_cast<int>(std::lround(cfg.domain_length * N));
+  ny_ = 2 * static_cast<int>(std::lround(0.5 * cfg.domain_width * N)) + 1;  // odd: a row of nodes on the midline
+  nz_ = static_cast<int>(std::lround(cfg.domain_height * N));
+  const double dx = units_.dx();
+  // node (i, j, k) sits at ((i + 1/2) dx, ...) from the domain corner; the stem/waterline crossing at
+  // (stem_position l, midline, (height - sea_depth) l) from the top
+  const Vec3 stem_domain(cfg.stem_position * l, 0.5 * ny_ * dx, (cfg.domain_height - cfg.sea_depth) * l);
+  const Vec3 stem_ship(ship_->datum().stem_x, 0.0, ship_->datum().waterline);
+  origin_ = stem_ship - stem_domain + Vec3::Constant(0.5 * dx);
+  // the hull, and where it can go, must stay clear of the faces
+  for (double t : {0.0}) {
+    for (const Vec3& c : mesh_box(*ship_)) {
+      const Vec3 g = (motion_->position(c, t) - origin_) / dx;
+      if (g.x() < 2 || g.x() > nx_ - 3 || g.y() < 2 || g.y() > ny_ - 3 || g.z() < 2)
+        throw GeometryError("wake: the ship '" + ship_->name() + "' does not fit the domain (a corner of its box at cell (" + std::to_string(g.x()) +
+                            ", " + std::to_string(g.y()) + ", " + std::to_string(g.z()) + ") of " + std::to_string(nx_) + " x " +
+                            std::to_string(ny_) + " x " + std::to_string(nz_) + ")");
+    }
+  }
+  rebuild(0.0, false);
+}
+
+Vec3 ShipWakeDomain::position(int i, int j, int k) const { return origin_ + Vec3(i, j, k) * units_.dx(); }
+
+lbm::WallMotion ShipWakeDomain::hull_motion(double t) const {
+  lbm::WallMotion w;
+  const double dt = units_.dt(), dx = units_.dx();
+  const Vec3 v = motion_->centre_velocity(t) * dt / dx, om = motion_->omega(t) * dt;
+  const Vec3 c = (motion_->position(motion_->centre(), t) - origin_) / dx;
+  for (int d = 0; d < 3; ++d) {
+    w.v[d] = static_cast<float>(v[d]);
+    w.omega[d] = static_cast<float>(om[d]);
+    w.centre[d] = static_cast<float>(c[d]);
+  }
+  return w;
+}
+
+std::vector<std::uint8_t> ShipWakeDomain::voxelise(double t) const {
+  std::vector<std::uint8_t> owner(cells(), kFluid);
+  const double dx = units_.dx();
+  const double water = ship_->datum().waterline;
+  for (int k = 0; k < nz_; ++k)
+    if (position(0, 0, k).z() > water)
+      for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i) owner[i + static_cast<std::size_t>(nx_) * (j + static_cast<std::size_t>(ny_) * k)] = kSea;
+  // the hull's box at time t, in cells
+  Vec3 lo = Vec3::Constant(1e300), hi = -lo;
+  for (const Vec3& c : mesh_box(*ship_)) {
+    const Vec3 g = (motion_->position(c, t) - origin_) / dx;
+    lo = lo.cwiseMin(g);
+    hi = hi.cwiseMax(g);
+  }
+  const ShipPose pose = motion_->pose(t);
+  const Mat3 Rt = ShipMotion::rotation(pose).transpose();
+  const Vec3 c = motion_->centre();
+  for (int k = std::max(0, int(std::floor(lo.z())) - 1); k <= std::min(nz_ - 1, int(std::ceil(hi.z())) + 1); ++k)
+    for (int j = std::max(0, int(std::floor(lo.y())) - 1); j <= std::min(ny_ - 1, int(std::ceil(hi.y())) + 1); ++j)
+      for (int i = std::max(0, int(std::floor(lo.x())) - 1); i <= std::min(nx_ - 1, int(std::ceil(hi.x())) + 1); ++i) {
+        const std::size_t n = i + static_cast<std::size_t>(nx_) * (j + static_cast<std::size_t>(ny_) * k);
+        if (owner[n] != kFluid) continue;
+        const Vec3 body = c + Rt * (position(i, j, k) + pose.heave * Vec3::UnitZ() - c);
+        if (ship_->inside(body)) owner[n] = kShip;
+      }
+  return owner;
+}
+
+void ShipWakeDomain::rebuild(double t, bool carry) {
+  std::vector<std::uint8_t> owner = voxelise(t);
+  voxel_time_ = t;
+  if (carry && owner == owner_) return;  // the same cells: only the wall velocity changes
+  lbm::LatticeConfig lc;
+  lc.nx = nx_;
+  lc.ny = ny_;
+  lc.nz = nz_;
+  lc.collision.nu = static_cast<float>(units_.lattice_viscosity());
+  lc.collision.smagorinsky = static_cast<float>(cfg_.smagorinsky);
+  lc.faces[0].type = lbm::FaceType::PressureOutlet;  // outflow at the stern end (x = 0)
+  lc.faces[1].type = lbm::FaceType::VelocityInlet;   // the wind from ahead
+  lc.faces[1].velocity = {static_cast<float>(-cfg_.lattice_wind), 0.0f, 0.0f};
+  lc.faces[2].type = lc.faces[3].type = lc.faces[4].type = lbm::FaceType::SlipWall;  // sides, top
+  lc.faces[5].type = lbm::FaceType::Wall;                                            // below the sea
+  lc.mach_guard = 0.9f;
+  lbm::Lattice lat(lc);
+  const bool moving = !motion_->is_static();
+  const int hull = moving ? lat.add_wall_motion(hull_motion(t)) : -1;
+  ship_cells_ = 0;
+  for (int k = 0; k < nz_; ++k)
+    for (int j = 0; j < ny_; ++j)
+      for (int i = 0; i < nx_; ++i) {
+        const std::uint8_t o = owner[lat.index(i, j, k)];
+        if (o == kSea && !cfg_.no_slip_sea) lat.set_slip_wall(i, j, k);
+        if ((o == kSea && cfg_.no_slip_sea) || (o == kShip && !moving)) lat.set_wall(i, j, k);
+        if (o == kShip && moving) lat.set_moving_wall(i, j, k, hull);
+        ship_cells_ += o == kShip;
+      }
+  lbm::Fields carried;
+  if (carry && solver_) carried = lbm::carry_flow(solver_->lattice(), solver_->fields());
+  if (carry) ++rebuilds_;
+  solver_ = lbm::make_solver(std::move(lat), cfg_.backend);
+  owner_ = std::move(owner);
+  if (!carried.rho.empty()) {
+    solver_->initialize(carried.rho, carried.u);
+  } else {
+    std::vector<float> u(3 * cells(), 0.0f);
+    for (std::size_t n = 0; n < cells(); ++n)
+      if (owner_[n] == kFluid) u[3 * n] = static_cast<float>(-cfg_.lattice_wind);
+    solver_->initialize({}, u);
+  }
+}
+
+void ShipWakeDomain::step(long n) {
+  for (long s = 0; s < n; ++s) {
+    solver_->step(1);
+    ++steps_;
+    if (motion_->is_static()) continue;
+    const double t = time();
+    double moved = 0;
+    for (const Vec3& c : mesh_box(*ship_)) moved = std::max(moved, (motion_->position(c, t) - motion_->position(c, voxel_time_)).norm());
+    if (moved > cfg_.revoxelise_cells * units_.dx()) rebuild(t, true);
+    solver_->set_wall_motion(0, hull_motion(t));
+  }
+}
+
+WakeTableInfo ShipWakeDomain::table_info() const {
+  const double N = cfg_.cells_per_length, l = ship_->datum().length;
+  const int jc = (ny_ - 1) / 2, half = static_cast<int>(std::lround(0.5 * cfg_.table_width * N));
+  const int i1 = std::min(nx_ - 1, static_cast<int>(std::lround((ship_->datum().stem_x - origin_.x()) / units_.dx())));
+  const int k0 = std::clamp(static_cast<int>(std::lround(cfg_.table_top * l / units_.dx())), 0, nz_ - 2);
+  WakeTableInfo info;
+  const Vec3 o = position(0, jc - half, k0);
+  info.origin = {o.x(), o.y(), o.z()};
+  info.spacing = units_.dx();
+  info.shape = {i1 + 1, 2 * half + 1, nz_ - k0};
+  info.free_stream = {-cfg_.wind, 0.0, 0.0};
+  info.free_density = cfg_.density;
+  info.ship = ship_->name();
+  info.motion = motion_->name();
+  return info;
+}
+
+void ShipWakeDomain::table_frame(std::vector<float>& velocity, std::vector<float>& density) {
+  const WakeTableInfo info = table_info();
+  const lbm::Fields f = solver_->fields();
+  const double scale = units_.dx() / units_.dt();
+  const int jc = (ny_ - 1) / 2, j0 = jc - (info.shape[1] - 1) / 2, k0 = nz_ - info.shape[2];
+  velocity.assign(3 * info.points(), 0.0f);
+  density.assign(info.points(), static_cast<float>(cfg_.density));
+  const double t = time();
+  const ShipPose pose = motion_->pose(t);
+  const Mat3 Rt = ShipMotion::rotation(pose).transpose();
+  std::size_t p = 0;
+  for (int k = k0; k < nz_; ++k)
+    for (int j = j0; j < j0 + info.shape[1]; ++j)
+      for (int i = 0; i < info.shape[0]; ++i, ++p) {
+        const std::size_t n = i + static_cast<std::size_t>(nx_) * (j + static_cast<std::size_t>(ny_) * k);
+        if (owner_[n] == kFluid) {
+          for (int d = 0; d < 3; ++d) velocity[3 * p + d] = static_cast<float>(f.u[3 * n + d] * scale);
+          density[p] = static_cast<float>(f.rho[n] * cfg_.density);
+        } else if (owner_[n] == kShip) {
+          const Vec3 body = motion_->centre() + Rt * (position(i, j, k) + pose.heave * Vec3::UnitZ() - motion_->centre());
+          const Vec3 v = motion_->velocity(body, t);
+          for (int d = 0; d < 3; ++d) velocity[3 * p + d] = static_cast<float>(v[d]);
+        }
+      }
+}
+
+ShipWakeDomain::Plane ShipWakeDomain::centre_plane() {
+  const lbm::Fields f = solver_->fields();
+  const double scale = units_.dx() / units_.dt();
+  const int jc = (ny_ - 1) / 2;
+  Plane pl;
+  pl.nx = nx_;
+  pl.nz = nz_;
+  pl.u.resize(3 * static_cast<std::size_t>(nx_) * nz_);
+  pl.solid.resize(static_cast<std::size_t>(nx_) * nz_);
+  for (int i = 0; i < nx_; ++i) pl.x.push_back(position(i, jc, 0).x());
+  for (int k = 0; k < nz_; ++k) pl.z.push_back(position(0, jc, k).z());
+  for (int k = 0; k < nz_; ++k)
+    for (int i = 0; i < nx_; ++i) {
+      const std::size_t n = i + static_cast<std::size_t>(nx_) * (jc + static_cast<std::size_t>(ny_) * k), p = i + static_cast<std::size_t>(nx_) * k;
+      pl.solid[p] = owner_[n] != kFluid;
+      for (int d = 0; d < 3; ++d) pl.u[3 * p + d] = pl.solid[p] ? 0.0f : static_cast<float>(f.u[3 * n + d] * scale);
+    }
+  return pl;
+}
+
+ShipWakeDomain::State ShipWakeDomain::state() {
+  State s;
+  s.steps = steps_;
+  s.voxel_time = voxel_time_;
+  s.populations = solver_->populations();
+  s.solver_steps = solver_->steps_done();
+  return s;
+}
+
+void ShipWakeDomain::restore(const State& s) {
+  if (s.steps < 0) throw lbm::ConfigError("wake: checkpoint with a negative step count");
+  owner_.clear();
+  rebuild(s.voxel_time, false);
+  solver_->restore(s.solver_steps, s.populations);
+  steps_ = s.steps;
+  if (!motion_->is_static()) solver_->set_wall_motion(0, hull_motion(time()));
+}
+
+}  // namespace ship_lrm::wake
