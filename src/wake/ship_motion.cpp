@@ -9,8 +9,9 @@
 namespace ship_lrm::wake {
 
 Mat3 ShipMotion::rotation(const ShipPose& s) {
-  // roll about x (starboard down positive), then pitch about y; bow up is -pitch about +y in FRD axes
-  return (Eigen::AngleAxisd(-s.pitch, Vec3::UnitY()) * Eigen::AngleAxisd(s.roll, Vec3::UnitX())).toRotationMatrix();
+  // roll about x (starboard down positive), then pitch about y (bow up positive): the Euler angles of
+  // FRD axes with zero yaw
+  return (Eigen::AngleAxisd(s.pitch, Vec3::UnitY()) * Eigen::AngleAxisd(s.roll, Vec3::UnitX())).toRotationMatrix();
 }
 
 Vec3 ShipMotion::position(const Vec3& p, double t) const {
@@ -20,14 +21,14 @@ Vec3 ShipMotion::position(const Vec3& p, double t) const {
 
 Vec3 ShipMotion::omega(double t) const {
   const ShipPose s = pose(t);
-  // omega = -pitch_rate e_y + R_y(-pitch) roll_rate e_x
-  return -s.pitch_rate * Vec3::UnitY() + Eigen::AngleAxisd(-s.pitch, Vec3::UnitY()) * (s.roll_rate * Vec3::UnitX());
+  // R = R_y(pitch) R_x(roll): omega = pitch_rate e_y + R_y(pitch) roll_rate e_x
+  return s.pitch_rate * Vec3::UnitY() + Eigen::AngleAxisd(s.pitch, Vec3::UnitY()) * (s.roll_rate * Vec3::UnitX());
 }
 
 Vec3 ShipMotion::centre_velocity(double t) const { return -pose(t).heave_rate * Vec3::UnitZ(); }
 
 Vec3 ShipMotion::velocity(const Vec3& p, double t) const {
-  return centre_velocity(t) + omega(t).cross(position(p, t) - centre_);
+  return centre_velocity(t) + omega(t).cross(position(p, t) - position(centre_, t));
 }
 
 SinusoidalMotion::SinusoidalMotion(std::string name, const Params& p, const Vec3& centre) : ShipMotion(centre), name_(std::move(name)), p_(p) {

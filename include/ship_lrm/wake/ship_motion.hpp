@@ -5,7 +5,7 @@
 // frame", which travels with the ship's mean speed and in which the wake table is written: a body
 // point p (ship frame) is at  c + R(roll, pitch) (p - c) - heave e_z  in the mean frame, with c the
 // centre of motion, heave positive up, roll positive starboard down, pitch positive bow up
-// (R = R_y(pitch) R_x(roll) in the FRD axes, so pitch bow up is a negative rotation about y).
+// (R = R_y(pitch) R_x(roll) in the FRD axes, the Euler angles with zero yaw).
 #pragma once
 #include <memory>
 #include <stdexcept>
