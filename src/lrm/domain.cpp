@@ -1,11 +1,11 @@
 // The LRM fluid domain (see domain.hpp).
 #include "ship_lrm/lrm/domain.hpp"
 
-#include "ship_lrm/lbm/refill.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <string>
+
+#include "ship_lrm/lbm/refill.hpp"
 
 namespace ship_lrm::lrm {
 namespace {
@@ -138,7 +138,9 @@ void LrmDomain::rebuild(bool carry_flow) {
   if (carry_flow && solver_) carried = lbm::carry_flow(solver_->lattice(), solver_->fields());
   const std::vector<float>& rho = carried.rho;
   const std::vector<float>& u = carried.u;
+  const std::vector<std::uint32_t> old_boundary = solver_ ? solver_->lattice().boundary_cells() : std::vector<std::uint32_t>{};
   solver_ = lbm::make_solver(std::move(lat), cfg_.backend);
+  if (solver_->lattice().boundary_cells() != old_boundary) face_air_.clear();  // walls moved through a face
   if (!disk_forces_.empty()) solver_->set_cell_forces(disk_cells_, disk_forces_);
   if (motion_set_) {
     motion_set_ = false;  // push the faces and the frame forces to the new solver
@@ -176,7 +178,8 @@ void LrmDomain::set_motion(const Motion& m) {
       const size_t c = cells[k];
       const int i = static_cast<int>(c % edge_), j = static_cast<int>((c / edge_) % edge_);
       const int l = static_cast<int>(c / (static_cast<size_t>(edge_) * edge_));
-      const Vec3 u = (m.air_velocity - m.omega.cross(position(i, j, l))) * to_lattice;
+      const Vec3 air = face_air_.empty() ? m.air_velocity : face_air_[k];
+      const Vec3 u = (air - m.omega.cross(position(i, j, l))) * to_lattice;
       fastest = std::max(fastest, u.norm());
       for (int d = 0; d < 3; ++d) values[4 * k + d] = static_cast<float>(u[d]);
     }
@@ -199,6 +202,36 @@ void LrmDomain::set_motion(const Motion& m) {
   }
   motion_ = m;
   motion_set_ = true;
+}
+
+std::vector<Vec3> LrmDomain::face_positions() const {
+  const auto& cells = solver_->lattice().boundary_cells();
+  std::vector<Vec3> p(cells.size());
+  for (size_t k = 0; k < cells.size(); ++k) {
+    const size_t c = cells[k];
+    p[k] = position(static_cast<int>(c % edge_), static_cast<int>((c / edge_) % edge_),
+                    static_cast<int>(c / (static_cast<size_t>(edge_) * edge_)));
+  }
+  return p;
+}
+
+void LrmDomain::set_face_air(std::vector<Vec3> air) {
+  if (!air.empty() && air.size() != solver_->lattice().boundary_cells().size())
+    throw lbm::ConfigError("LRM: set_face_air got " + std::to_string(air.size()) + " velocities for " +
+                           std::to_string(solver_->lattice().boundary_cells().size()) + " boundary cells");
+  for (const Vec3& v : air)
+    if (!v.allFinite()) throw lbm::ConfigError("LRM: a face air velocity is not finite");
+  std::vector<Vec3> previous = std::move(face_air_);
+  face_air_ = std::move(air);
+  const bool was_set = motion_set_;
+  motion_set_ = false;  // push the faces again
+  try {
+    set_motion(motion_);
+  } catch (...) {
+    face_air_ = std::move(previous);
+    motion_set_ = was_set;
+    throw;
+  }
 }
 
 void LrmDomain::restart_flow() {

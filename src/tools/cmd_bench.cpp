@@ -7,6 +7,7 @@
 #ifdef SHIP_LRM_HAVE_FLIGHT
 #include "ship_lrm/flight/flight_benchmark.hpp"
 #include "ship_lrm/lrm/lrm_benchmark.hpp"
+#include "ship_lrm/lrm/wake_feed.hpp"
 #endif
 
 namespace ship_lrm::tools {
@@ -64,14 +65,43 @@ std::function<int()> add_bench_command(CLI::App& app) {
   lrm_cmd->add_flag("--pipelined", lo->pipelined,
                     "with --realtime: the LRM runs one LBM interval behind the flight model (a job is due one LBM step after "
                     "its loads were posted) instead of lock-step");
+  auto* wake_cmd = bench->add_subcommand("wake", "Serving an LRM domain's faces from a wake table, against the LBM step (issue 5)");
+  struct WakeOpts {
+    std::string table, backend = "cpu";
+    int nodes = 64, steps = 20;
+    double reach = 1.25;
+    bool json = false;
+  };
+  auto wo = std::make_shared<WakeOpts>();
+  wake_cmd->add_option("--table", wo->table, "wake table (ship_lrm wake ...)")->required();
+  wake_cmd->add_option("--backend", wo->backend, "cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
+  wake_cmd->add_option("--N", wo->nodes, "lattice nodes per 4R")->check(CLI::Range(16, 512))->capture_default_str();
+  wake_cmd->add_option("--reach", wo->reach, "domain edge / 4R")->check(CLI::Range(1.0, 8.0))->capture_default_str();
+  wake_cmd->add_option("--steps", wo->steps, "LBM steps timed")->check(CLI::Range(1, 100000))->capture_default_str();
+  wake_cmd->add_flag("--json", wo->json, "print one JSON object");
 #endif
   return [o, lbm
 #ifdef SHIP_LRM_HAVE_FLIGHT
           ,
-          fo, flight, lo, lrm_cmd
+          fo, flight, lo, lrm_cmd, wo, wake_cmd
 #endif
   ]() -> int {
 #ifdef SHIP_LRM_HAVE_FLIGHT
+    if (wake_cmd->parsed()) {
+      lrm::LrmConfig c;
+      c.nodes = wo->nodes;
+      c.reach = wo->reach;
+      c.backend = lbm::parse_backend(wo->backend);
+      const auto r = lrm::run_wake_feed_benchmark(wo->table, c, wo->steps);
+      if (wo->json)
+        std::cout << r.to_json() << std::endl;
+      else
+        std::cout << std::fixed << std::setprecision(3) << "wake faces, " << r.backend << ", N = " << r.nodes << " (" << r.cells_per_edge
+                  << "^3 cells, " << r.boundary_cells << " boundary cells): feed " << 1e3 * r.feed_seconds << " ms, LBM step "
+                  << 1e3 * r.step_seconds << " ms per step: " << std::setprecision(1) << 100 * r.feed_fraction() << " % (" << r.refreshes
+                  << " refreshes in " << r.steps << " steps, " << r.window_loads << " window reads)\n";
+      return 0;
+    }
     if (lrm_cmd->parsed()) {
       lrm::LrmConfig c;
       c.nodes = lo->nodes;

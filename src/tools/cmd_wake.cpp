@@ -40,7 +40,8 @@ std::function<int()> add_wake_command(CLI::App& app) {
   auto backend = std::make_shared<std::string>("auto");
   auto mesh = std::make_shared<std::string>();
   auto flags = std::make_shared<std::array<bool, 4>>();  // overwrite, no-resume, float32, no-plot
-  cmd->add_option("--preset", *preset, "default (the approach scenario's table; cached under ~/.cache/ship_lrm when --out is not given) or tiny");
+  cmd->add_option("--preset", *preset,
+                  "default (the approach scenario's table; cached under ~/.cache/ship_lrm when --out is not given) or tiny");
   cmd->add_option("--ship", opt->ship, "natogd, sfs2 or FILE.stl (full scale, metres, ship frame: x forward, z down)");
   cmd->add_option("--scale", opt->scale, "model (1/50, the NRC wind-tunnel model) or full");
   cmd->add_option("--N", opt->domain.cells_per_length, "cells per ship length (thesis: converged at 364)");
@@ -106,8 +107,8 @@ std::function<int()> add_wake_command(CLI::App& app) {
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
     std::fprintf(stderr, "\n");
-    std::cout << "ship " << o.ship << " (" << o.scale << "), motion " << o.motion << ", wind " << o.domain.wind << " m/s, N = "
-              << o.domain.cells_per_length << ": " << r.cells << " cells, dx = " << r.dx << " m, dt = " << r.dt << " s\n"
+    std::cout << "ship " << o.ship << " (" << o.scale << "), motion " << o.motion << ", wind " << o.domain.wind
+              << " m/s, N = " << o.domain.cells_per_length << ": " << r.cells << " cells, dx = " << r.dx << " m, dt = " << r.dt << " s\n"
               << r.steps << " steps (" << r.simulated << " s simulated) in " << r.wall_seconds << " s wall clock, " << r.mlups << " MLUPS, "
               << r.frames << " frames, " << r.rebuilds << " hull re-voxelisations, " << r.stats.samples << " centre-plane samples\n";
     if (r.interrupted) {
@@ -120,7 +121,8 @@ std::function<int()> add_wake_command(CLI::App& app) {
       const std::string cmdline = "/usr/bin/env python3 '" + flight::shipped_directory("SHIP_LRM_SCRIPTS_DIR", "scripts") +
                                   "/plot_wake.py' plane '" + r.centre_plane_csv + "' '" + png.string() + "'";
       if (std::system(cmdline.c_str()) != 0)
-        std::cerr << "ship_lrm: warning: plotting failed (needs python3 with matplotlib); the CSV " << r.centre_plane_csv << " is complete\n";
+        std::cerr << "ship_lrm: warning: plotting failed (needs python3 with matplotlib); the CSV " << r.centre_plane_csv
+                  << " is complete\n";
     }
     return 0;
   };

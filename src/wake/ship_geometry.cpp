@@ -136,8 +136,8 @@ std::unique_ptr<BlockShip> make_natogd(double s) {
   const double deck_len = 25.5;    // flight deck, stern to hangar door [EST, 0.17 l]
   const double stern = -deck_len;  // origin at the hangar door base
   const double bow = stern + 150.0;
-  const double half_beam = 9.0;    // beam 18 m [EST, 0.12 l]
-  const double freeboard = 6.5;    // deck above the waterline at the stern [EST]
+  const double half_beam = 9.0;         // beam 18 m [EST, 0.12 l]
+  const double freeboard = 6.5;         // deck above the waterline at the stern [EST]
   const double keel = freeboard + 2.0;  // hull continues below the waterline into the sea [model choice]
   const double taper_start = 80.0;      // where the bow starts to narrow [EST]
   std::vector<BlockShip::Block> b;
@@ -147,12 +147,12 @@ std::unique_ptr<BlockShip> make_natogd(double s) {
   const double tip = 0.5;  // half-width at the stem
   bowb.corners = {Vec3(taper_start, -half_beam, keel), Vec3(bow, -tip, keel), Vec3(bow, tip, keel), Vec3(taper_start, half_beam, keel),
                   Vec3(taper_start, -half_beam, -2.0), Vec3(bow, -tip, -2.0), Vec3(bow, tip, -2.0), Vec3(taper_start, half_beam, -2.0)};
-  b.push_back(bowb);  // forecastle 2 m above the main deck [EST]
-  b.push_back(BlockShip::box("hangar", 0.0, 20.0, -7.0, 7.0, -7.0, 0.0));                 // door 14 m wide, 7 m high [EST]
-  b.push_back(BlockShip::box("aft superstructure", 20.0, 45.0, -7.0, 7.0, -10.0, 0.0));    // [EST]
-  b.push_back(BlockShip::box("funnel", 33.0, 43.0, -3.5, 3.5, -17.0, -10.0));              // [EST]
-  b.push_back(BlockShip::box("bridge", 55.0, 75.0, -7.0, 7.0, -13.0, 0.0));                // [EST]
-  b.push_back(BlockShip::box("mast", 60.0, 63.0, -1.25, 1.25, -30.0, -13.0));              // [EST]
+  b.push_back(bowb);                                                                     // forecastle 2 m above the main deck [EST]
+  b.push_back(BlockShip::box("hangar", 0.0, 20.0, -7.0, 7.0, -7.0, 0.0));                // door 14 m wide, 7 m high [EST]
+  b.push_back(BlockShip::box("aft superstructure", 20.0, 45.0, -7.0, 7.0, -10.0, 0.0));  // [EST]
+  b.push_back(BlockShip::box("funnel", 33.0, 43.0, -3.5, 3.5, -17.0, -10.0));            // [EST]
+  b.push_back(BlockShip::box("bridge", 55.0, 75.0, -7.0, 7.0, -13.0, 0.0));              // [EST]
+  b.push_back(BlockShip::box("mast", 60.0, 63.0, -1.25, 1.25, -30.0, -13.0));            // [EST]
   for (auto& block : b)
     for (auto& c : block.corners) c *= s;
   return std::make_unique<BlockShip>(s == 1.0 ? "natogd" : "natogd x" + std::to_string(s), std::move(b), freeboard * s);
@@ -175,7 +175,7 @@ std::unique_ptr<BlockShip> make_sfs2(double s) {
   bowb.corners = {Vec3(taper_start, -hb, keel), Vec3(bow, -tip, keel), Vec3(bow, tip, keel), Vec3(taper_start, hb, keel),
                   Vec3(taper_start, -hb, 0.0),  Vec3(bow, -tip, 0.0),  Vec3(bow, tip, 0.0),  Vec3(taper_start, hb, 0.0)};
   b.push_back(bowb);
-  b.push_back(BlockShip::box("hangar", 0.0, 21.34, -hb, hb, -6.10, 0.0));           // 70 ft long, 20 ft high [EST]
+  b.push_back(BlockShip::box("hangar", 0.0, 21.34, -hb, hb, -6.10, 0.0));             // 70 ft long, 20 ft high [EST]
   b.push_back(BlockShip::box("superstructure", 21.34, 48.77, -hb, hb, -12.19, 0.0));  // second step 40 ft [EST]
   for (auto& block : b)
     for (auto& c : block.corners) c *= s;
@@ -216,7 +216,8 @@ std::vector<Triangle> read_stl(const std::string& path) {
   while (s >> word) {
     if (word == "vertex") {
       double x, y, z;
-      if (!(s >> x >> y >> z)) throw GeometryError("STL file '" + path + "': malformed vertex after triangle " + std::to_string(tris.size()));
+      if (!(s >> x >> y >> z))
+        throw GeometryError("STL file '" + path + "': malformed vertex after triangle " + std::to_string(tris.size()));
       if (v >= 3) throw GeometryError("STL file '" + path + "': a facet with more than 3 vertices");
       t.v[v++] = Vec3(x, y, z);
     } else if (word == "endloop") {
@@ -277,7 +278,8 @@ StlShip::StlShip(const std::string& path, double scale, bool z_up, double waterl
       Vec3 p = Vec3::Zero();
       for (const auto& [key, i] : ids)
         if (i == e.first) p = Vec3(key[0], key[1], key[2]);
-      throw GeometryError("STL file '" + path + "' is not a closed, consistently oriented surface (a hole or a flipped triangle at the edge from (" +
+      throw GeometryError("STL file '" + path +
+                          "' is not a closed, consistently oriented surface (a hole or a flipped triangle at the edge from (" +
                           std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) +
                           ")); repair it (e.g. with MeshLab or admesh) and try again");
     }

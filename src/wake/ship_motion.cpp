@@ -31,7 +31,8 @@ Vec3 ShipMotion::velocity(const Vec3& p, double t) const {
   return centre_velocity(t) + omega(t).cross(position(p, t) - position(centre_, t));
 }
 
-SinusoidalMotion::SinusoidalMotion(std::string name, const Params& p, const Vec3& centre) : ShipMotion(centre), name_(std::move(name)), p_(p) {
+SinusoidalMotion::SinusoidalMotion(std::string name, const Params& p, const Vec3& centre)
+    : ShipMotion(centre), name_(std::move(name)), p_(p) {
   if (!(p.frequency > 0) || !std::isfinite(p.frequency)) throw MotionError("ship motion: the frequency must be > 0 Hz");
   for (double v : {p.heave, p.roll, p.pitch, p.heave_phase, p.roll_phase, p.pitch_phase})
     if (!std::isfinite(v)) throw MotionError("ship motion: amplitudes and phases must be finite");

@@ -27,7 +27,8 @@ std::array<Vec3, 8> mesh_box(const ShipGeometry& ship) {
 }  // namespace
 
 lbm::UnitConverter wake_units(const WakeConfig& cfg, double ship_length) {
-  if (cfg.cells_per_length < 16) throw lbm::ConfigError("wake: N must be >= 16 cells per ship length, got " + std::to_string(cfg.cells_per_length));
+  if (cfg.cells_per_length < 16)
+    throw lbm::ConfigError("wake: N must be >= 16 cells per ship length, got " + std::to_string(cfg.cells_per_length));
   if (!(cfg.wind > 0) || !std::isfinite(cfg.wind)) throw lbm::ConfigError("wake: the wind must be > 0 m/s");
   if (!(ship_length > 0)) throw lbm::ConfigError("wake: the ship has no length");
   lbm::UnitReference r;
@@ -59,9 +60,9 @@ ShipWakeDomain::ShipWakeDomain(const WakeConfig& cfg, std::shared_ptr<const Ship
     for (const Vec3& c : mesh_box(*ship_)) {
       const Vec3 g = (motion_->position(c, t) - origin_) / dx;
       if (g.x() < 2 || g.x() > nx_ - 3 || g.y() < 2 || g.y() > ny_ - 3 || g.z() < 2)
-        throw GeometryError("wake: the ship '" + ship_->name() + "' does not fit the domain (a corner of its box at cell (" + std::to_string(g.x()) +
-                            ", " + std::to_string(g.y()) + ", " + std::to_string(g.z()) + ") of " + std::to_string(nx_) + " x " +
-                            std::to_string(ny_) + " x " + std::to_string(nz_) + ")");
+        throw GeometryError("wake: the ship '" + ship_->name() + "' does not fit the domain (a corner of its box at cell (" +
+                            std::to_string(g.x()) + ", " + std::to_string(g.y()) + ", " + std::to_string(g.z()) + ") of " +
+                            std::to_string(nx_) + " x " + std::to_string(ny_) + " x " + std::to_string(nz_) + ")");
     }
   }
   rebuild(0.0, false);
@@ -224,7 +225,8 @@ ShipWakeDomain::Plane ShipWakeDomain::centre_plane() {
   for (int k = 0; k < nz_; ++k) pl.z.push_back(position(0, jc, k).z());
   for (int k = 0; k < nz_; ++k)
     for (int i = 0; i < nx_; ++i) {
-      const std::size_t n = i + static_cast<std::size_t>(nx_) * (jc + static_cast<std::size_t>(ny_) * k), p = i + static_cast<std::size_t>(nx_) * k;
+      const std::size_t n = i + static_cast<std::size_t>(nx_) * (jc + static_cast<std::size_t>(ny_) * k),
+                        p = i + static_cast<std::size_t>(nx_) * k;
       pl.solid[p] = owner_[n] != kFluid;
       for (int d = 0; d < 3; ++d) pl.u[3 * p + d] = pl.solid[p] ? 0.0f : static_cast<float>(f.u[3 * n + d] * scale);
     }

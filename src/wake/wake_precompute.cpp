@@ -21,9 +21,10 @@ constexpr char kMagic[16] = "SHIPLRM-WAKECK1";
 std::string signature(const PrecomputeOptions& o, const ShipWakeDomain& d) {
   std::ostringstream s;
   s.precision(17);
-  s << "ship=" << o.ship << " scale=" << o.scale << " motion=" << o.motion << " N=" << o.domain.cells_per_length << " wind=" << o.domain.wind
-    << " lattice_wind=" << o.domain.lattice_wind << " smagorinsky=" << o.domain.smagorinsky << " grid=" << d.nx() << "x" << d.ny() << "x"
-    << d.nz() << " interval=" << o.frame_interval << " stats=" << o.stats_interval << " half=" << o.half_precision;
+  s << "ship=" << o.ship << " scale=" << o.scale << " motion=" << o.motion << " N=" << o.domain.cells_per_length
+    << " wind=" << o.domain.wind << " lattice_wind=" << o.domain.lattice_wind << " smagorinsky=" << o.domain.smagorinsky
+    << " grid=" << d.nx() << "x" << d.ny() << "x" << d.nz() << " interval=" << o.frame_interval << " stats=" << o.stats_interval
+    << " half=" << o.half_precision;
   return s.str();
 }
 
@@ -127,7 +128,8 @@ void write_csv(const std::string& path, const CentrePlaneStats& s, bool phases, 
   for (int kz = 0; kz < s.nz; ++kz)
     for (int i = 0; i < s.nx; ++i) {
       const std::size_t n = i + static_cast<std::size_t>(s.nx) * kz;
-      out << s.x[i] << "," << s.z[kz] << "," << int(s.solid[n]) << "," << m[3 * n] << "," << m[3 * n + 1] << "," << m[3 * n + 2] << "," << k[n];
+      out << s.x[i] << "," << s.z[kz] << "," << int(s.solid[n]) << "," << m[3 * n] << "," << m[3 * n + 1] << "," << m[3 * n + 2] << ","
+          << k[n];
       if (phases)
         for (int p = 0; p < 4; ++p) out << "," << pm[p][3 * n] << "," << pm[p][3 * n + 2] << "," << pk[p][n];
       out << "," << wind << "\n";
@@ -225,7 +227,9 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
   const double dt = domain.units().dt();
   const double startup = opt.startup >= 0 ? opt.startup : opt.domain.domain_length * sd.length / opt.domain.wind;
   const double stats_interval = opt.stats_interval > 0 ? opt.stats_interval : opt.frame_interval;
-  if (opt.frame_interval < dt) throw lbm::ConfigError("wake: the frame interval " + std::to_string(opt.frame_interval) + " s is shorter than the time step " + std::to_string(dt) + " s");
+  if (opt.frame_interval < dt)
+    throw lbm::ConfigError("wake: the frame interval " + std::to_string(opt.frame_interval) + " s is shorter than the time step " +
+                           std::to_string(dt) + " s");
   const long total_steps = static_cast<long>(std::ceil((startup + opt.duration) / dt + 0.5));
   const int total_frames = static_cast<int>(std::floor(opt.duration / opt.frame_interval + 1e-9)) + 1;
   const auto* periodic = dynamic_cast<const SinusoidalMotion*>(motion.get());
@@ -252,7 +256,8 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
   if (opt.resume && fs::exists(ckpt)) {
     Checkpoint c = load(ckpt, domain.cells() * 3 + 16);
     if (c.signature != sig)
-      throw lbm::ConfigError("wake: checkpoint '" + ckpt + "' belongs to another run (" + c.signature + "); delete it or choose another --out");
+      throw lbm::ConfigError("wake: checkpoint '" + ckpt + "' belongs to another run (" + c.signature +
+                             "); delete it or choose another --out");
     domain.restore(c.state);
     writer = std::make_unique<WakeTableWriter>(opt.out, info, true, c.frames);
     stats = std::move(c.stats);
@@ -321,7 +326,8 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
       const long done = domain.steps() - start_step;
       const double fraction = static_cast<double>(domain.steps()) / total_steps;
       const double per_step = done > 0 ? wall / done : 0;
-      opt.progress({fraction, t, per_step * (total_steps - domain.steps()), done * domain.cells() / std::max(wall, 1e-9) / 1e6, writer->frames()});
+      opt.progress(
+          {fraction, t, per_step * (total_steps - domain.steps()), done * domain.cells() / std::max(wall, 1e-9) / 1e6, writer->frames()});
     }
   }
   r.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();

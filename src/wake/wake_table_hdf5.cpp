@@ -73,7 +73,8 @@ std::vector<double> read_attr_numbers(hid_t obj, const char* name, std::size_t e
   Handle space(H5Aget_space(a), H5Sclose);
   const hssize_t n = H5Sget_simple_extent_npoints(space);
   if (n != static_cast<hssize_t>(expected))
-    throw TableError("wake table '" + path + "': attribute '" + name + "' has " + std::to_string(n) + " values, expected " + std::to_string(expected));
+    throw TableError("wake table '" + path + "': attribute '" + name + "' has " + std::to_string(n) + " values, expected " +
+                     std::to_string(expected));
   std::vector<double> v(expected);
   if (H5Aread(a, H5T_NATIVE_DOUBLE, v.data()) < 0) throw TableError("wake table '" + path + "': attribute '" + name + "' is unreadable");
   for (double x : v)
@@ -103,7 +104,8 @@ struct WakeTableWriter::Impl {
 WakeTableWriter::WakeTableWriter(const std::string& path, const WakeTableInfo& info, bool resume, int keep_frames)
     : impl_(std::make_unique<Impl>()), info_(info), path_(path) {
   quiet();
-  if (info.shape[0] < 2 || info.shape[1] < 2 || info.shape[2] < 2) throw TableError("wake table: the grid needs at least 2 points per axis");
+  if (info.shape[0] < 2 || info.shape[1] < 2 || info.shape[2] < 2)
+    throw TableError("wake table: the grid needs at least 2 points per axis");
   if (!(info.spacing > 0) || !(info.frame_interval > 0)) throw TableError("wake table: spacing and frame interval must be > 0");
   const hsize_t nx = info.shape[0], ny = info.shape[1], nz = info.shape[2];
   if (resume) {
@@ -216,24 +218,29 @@ void WakeTableWriter::write_xdmf() const {
   std::ofstream x(tmp);
   const int nx = info_.shape[0], ny = info_.shape[1], nz = info_.shape[2], F = info_.frames;
   const char* prec = info_.half_precision ? "4" : "4";  // read through HDF5's conversion into float32
-  x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n  <Grid Name=\"wake\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n  <Grid Name=\"wake\" GridType=\"Collection\" "
+       "CollectionType=\"Temporal\">\n";
   for (int f = 0; f < F; ++f) {
     x << "   <Grid Name=\"frame" << f << "\" GridType=\"Uniform\">\n";
     x << "    <Time Value=\"" << info_.start_time + f * info_.frame_interval << "\"/>\n";
     x << "    <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" << nz << " " << ny << " " << nx << "\"/>\n";
     x << "    <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n";
-    x << "     <DataItem Dimensions=\"3\" Format=\"XML\">" << info_.origin[2] << " " << info_.origin[1] << " " << info_.origin[0] << "</DataItem>\n";
-    x << "     <DataItem Dimensions=\"3\" Format=\"XML\">" << info_.spacing << " " << info_.spacing << " " << info_.spacing << "</DataItem>\n";
+    x << "     <DataItem Dimensions=\"3\" Format=\"XML\">" << info_.origin[2] << " " << info_.origin[1] << " " << info_.origin[0]
+      << "</DataItem>\n";
+    x << "     <DataItem Dimensions=\"3\" Format=\"XML\">" << info_.spacing << " " << info_.spacing << " " << info_.spacing
+      << "</DataItem>\n";
     x << "    </Geometry>\n";
     x << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n";
     x << "     <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << nz << " " << ny << " " << nx << " 3\">\n";
-    x << "      <DataItem Dimensions=\"3 5\" Format=\"XML\">" << f << " 0 0 0 0 1 1 1 1 1 1 " << nz << " " << ny << " " << nx << " 3</DataItem>\n";
+    x << "      <DataItem Dimensions=\"3 5\" Format=\"XML\">" << f << " 0 0 0 0 1 1 1 1 1 1 " << nz << " " << ny << " " << nx
+      << " 3</DataItem>\n";
     x << "      <DataItem Dimensions=\"" << F << " " << nz << " " << ny << " " << nx << " 3\" NumberType=\"Float\" Precision=\"" << prec
       << "\" Format=\"HDF\">" << file << ":/velocity</DataItem>\n";
     x << "     </DataItem>\n    </Attribute>\n";
     x << "    <Attribute Name=\"density\" AttributeType=\"Scalar\" Center=\"Node\">\n";
     x << "     <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << nz << " " << ny << " " << nx << "\">\n";
-    x << "      <DataItem Dimensions=\"3 4\" Format=\"XML\">" << f << " 0 0 0 1 1 1 1 1 " << nz << " " << ny << " " << nx << "</DataItem>\n";
+    x << "      <DataItem Dimensions=\"3 4\" Format=\"XML\">" << f << " 0 0 0 1 1 1 1 1 " << nz << " " << ny << " " << nx
+      << "</DataItem>\n";
     x << "      <DataItem Dimensions=\"" << F << " " << nz << " " << ny << " " << nx << "\" NumberType=\"Float\" Precision=\"" << prec
       << "\" Format=\"HDF\">" << file << ":/density</DataItem>\n";
     x << "     </DataItem>\n    </Attribute>\n   </Grid>\n";
@@ -322,7 +329,7 @@ const WakeTable::Window& WakeTable::window(int frame, const std::array<int, 3>& 
   // each other
   Window& w = w_[frame % 2];
   if (w.frame == frame && w.lo[0] <= lo[0] && w.lo[1] <= lo[1] && w.lo[2] <= lo[2] && w.lo[0] + w.n[0] > hi[0] &&
-        w.lo[1] + w.n[1] > hi[1] && w.lo[2] + w.n[2] > hi[2])
+      w.lo[1] + w.n[1] > hi[1] && w.lo[2] + w.n[2] > hi[2])
     return w;
   // load a window around [lo, hi] with a margin (the domain moves on), bounded by max_points_
   std::array<int, 3> a{}, n{};
@@ -386,9 +393,9 @@ void WakeTable::sample(double t, const std::vector<double>& xyz, std::vector<Wak
       hi[d] = std::max(hi[d], i0 + 1);
     }
   }
-  const WakeSample free{{static_cast<float>(info_.free_stream[0]), static_cast<float>(info_.free_stream[1]),
-                         static_cast<float>(info_.free_stream[2])},
-                        static_cast<float>(info_.free_density)};
+  const WakeSample free{
+      {static_cast<float>(info_.free_stream[0]), static_cast<float>(info_.free_stream[1]), static_cast<float>(info_.free_stream[2])},
+      static_cast<float>(info_.free_density)};
   if (hi[0] < 0) {
     std::fill(out.begin(), out.end(), free);
     return;
@@ -418,7 +425,8 @@ void WakeTable::sample(double t, const std::vector<double>& xyz, std::vector<Wak
       for (int c = 0; c < 8; ++c) {
         const int dx = c & 1, dy = (c >> 1) & 1, dz = (c >> 2) & 1;
         const double wc = wt * (dx ? fr[0] : 1 - fr[0]) * (dy ? fr[1] : 1 - fr[1]) * (dz ? fr[2] : 1 - fr[2]);
-        const std::size_t k = static_cast<std::size_t>(i[0] + dx) + static_cast<std::size_t>(W.n[0]) * (i[1] + dy + static_cast<std::size_t>(W.n[1]) * (i[2] + dz));
+        const std::size_t k = static_cast<std::size_t>(i[0] + dx) +
+                              static_cast<std::size_t>(W.n[0]) * (i[1] + dy + static_cast<std::size_t>(W.n[1]) * (i[2] + dz));
         acc[0] += wc * W.u[3 * k];
         acc[1] += wc * W.u[3 * k + 1];
         acc[2] += wc * W.u[3 * k + 2];

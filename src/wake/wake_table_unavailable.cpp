@@ -3,7 +3,9 @@
 
 namespace ship_lrm::wake {
 namespace {
-[[noreturn]] void unavailable() { throw TableError("this build has no HDF5: the wake table is unavailable (install libhdf5-dev and rebuild)"); }
+[[noreturn]] void unavailable() {
+  throw TableError("this build has no HDF5: the wake table is unavailable (install libhdf5-dev and rebuild)");
+}
 }  // namespace
 
 struct WakeTableWriter::Impl {};

@@ -72,9 +72,12 @@ TEST(ShipGeometry, StlAsciiAndErrors) {
   const std::string ascii = temp("tet.stl");
   {
     std::ofstream o(ascii);
-    const char* tris[4][3] = {{"0 0 0", "0 1 0", "1 0 0"}, {"0 0 0", "1 0 0", "0 0 1"}, {"0 0 0", "0 0 1", "0 1 0"}, {"1 0 0", "0 1 0", "0 0 1"}};
+    const char* tris[4][3] = {
+        {"0 0 0", "0 1 0", "1 0 0"}, {"0 0 0", "1 0 0", "0 0 1"}, {"0 0 0", "0 0 1", "0 1 0"}, {"1 0 0", "0 1 0", "0 0 1"}};
     o << "solid tet\n";
-    for (auto& t : tris) o << " facet normal 0 0 0\n  outer loop\n   vertex " << t[0] << "\n   vertex " << t[1] << "\n   vertex " << t[2] << "\n  endloop\n endfacet\n";
+    for (auto& t : tris)
+      o << " facet normal 0 0 0\n  outer loop\n   vertex " << t[0] << "\n   vertex " << t[1] << "\n   vertex " << t[2]
+        << "\n  endloop\n endfacet\n";
     o << "endsolid tet\n";
   }
   const StlShip tet(ascii);

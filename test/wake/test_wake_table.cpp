@@ -38,7 +38,8 @@ WakeTableInfo grid(bool half) {
 
 // A field linear in space and time: trilinear + linear interpolation reproduces it exactly.
 std::array<double, 4> linear(double x, double y, double z, double t) {
-  return {-10 + 0.3 * x - 0.2 * y + 0.1 * z + 2.0 * t, 0.5 * x + 0.25 * z - t, 0.1 * y + 0.05 * x + 0.5 * t, 1.2 + 0.001 * x - 0.002 * z + 0.01 * t};
+  return {-10 + 0.3 * x - 0.2 * y + 0.1 * z + 2.0 * t, 0.5 * x + 0.25 * z - t, 0.1 * y + 0.05 * x + 0.5 * t,
+          1.2 + 0.001 * x - 0.002 * z + 0.01 * t};
 }
 
 std::string write_linear(const std::string& name, bool half, int frames) {
@@ -123,8 +124,9 @@ TEST(WakeTable, Float16KeepsHalfPrecisionAndTheWindowBoundsMemory) {
   const auto want = linear(x, y, z, in.start_time);
   for (int d = 0; d < 3; ++d) EXPECT_NEAR(got[0].u[d], want[d], 1e-3 * (1 + std::abs(want[d])));  // 11-bit mantissa
   // a region larger than the window is refused with a message, not read
-  EXPECT_THROW(table.sample(in.start_time, {in.origin[0], in.origin[1], in.origin[2], in.origin[0] + 9, in.origin[1] + 5, in.origin[2] + 3}, got),
-               TableError);
+  EXPECT_THROW(
+      table.sample(in.start_time, {in.origin[0], in.origin[1], in.origin[2], in.origin[0] + 9, in.origin[1] + 5, in.origin[2] + 3}, got),
+      TableError);
 }
 
 TEST(WakeTable, BadFilesGiveClearErrors) {

@@ -72,6 +72,14 @@ class LrmDomain {
   // A domain translating at constant velocity: set_motion with air_velocity only.
   void set_stream(const Vec3& air_velocity);
   const Motion& motion() const { return motion_; }
+  // The undisturbed air is not uniform (a ship wake): positions of the open-boundary cells (m, mr
+  // axes, from the hub; solver boundary-cell order) and the air velocity relative to the hub at each
+  // (m/s, mr axes), which then replaces motion().air_velocity at the faces (minus omega x r as
+  // before). An empty vector returns to the uniform air. After walls moved into or out of a face
+  // (rebuilds() changed) the cell list changes and the faces return to the uniform air until the
+  // next call. ConfigError for a wrong count or a face velocity beyond the Mach limit.
+  std::vector<Vec3> face_positions() const;
+  void set_face_air(std::vector<Vec3> air);
   // Position of a cell centre relative to the hub (m, mr axes).
   Vec3 position(int i, int j, int k) const;
   // Restart the flow: every cell at rest density with the current motion's air velocity (no wake).
@@ -110,6 +118,7 @@ class LrmDomain {
   std::unique_ptr<lbm::Solver> solver_;
   long steps_ = 0;
   Motion motion_;
+  std::vector<Vec3> face_air_;  // per boundary cell, or empty: uniform motion_.air_velocity
   bool motion_set_ = false;
   std::vector<std::shared_ptr<WallSurface>> walls_;
   std::vector<std::int16_t> owner_;  // per cell: index of the wall that holds it, or -1

@@ -24,7 +24,7 @@ class MotionError : public std::invalid_argument {
 };
 
 struct ShipPose {
-  double heave = 0, roll = 0, pitch = 0;           // m (up), rad, rad (bow up)
+  double heave = 0, roll = 0, pitch = 0;                 // m (up), rad, rad (bow up)
   double heave_rate = 0, roll_rate = 0, pitch_rate = 0;  // m/s, rad/s
 };
 

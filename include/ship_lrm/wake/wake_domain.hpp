@@ -102,7 +102,7 @@ class ShipWakeDomain {
   double voxel_time_ = 0;
   std::size_t rebuilds_ = 0, ship_cells_ = 0;
   std::array<int, 3> box_lo_{}, box_hi_{};  // lattice box the hull can reach
-  std::vector<std::uint8_t> owner_;        // 0 fluid, 1 sea, 2 ship
+  std::vector<std::uint8_t> owner_;         // 0 fluid, 1 sea, 2 ship
   std::unique_ptr<lbm::Solver> solver_;
   std::vector<std::uint8_t> voxelise(double t) const;
   void rebuild(double t, bool carry);

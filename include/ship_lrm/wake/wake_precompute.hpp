@@ -17,17 +17,17 @@ namespace ship_lrm::wake {
 
 struct PrecomputeOptions {
   WakeConfig domain;
-  std::string ship = "natogd";   // natogd | sfs2 | FILE.stl
-  std::string scale = "full";    // model (1/50) | full
-  std::string motion = "static"; // static | pitch | heave | approach | FILE.csv
-  double startup = -1;           // s; < 0: the time the wind takes to cross the domain once
-  double duration = 30;          // s of frames after the start-up
-  double frame_interval = 0.02;  // s (thesis 6.3)
-  double stats_interval = -1;    // s between centre-plane samples; < 0: the frame interval
-  bool half_precision = true;    // float16 on disk
-  std::string out;               // table path (.h5); the side-car .xdmf and the checkpoint .ckpt beside it
-  double checkpoint_seconds = 60;  // wall-clock interval between checkpoints
-  bool resume = true;              // continue from a matching checkpoint
+  std::string ship = "natogd";              // natogd | sfs2 | FILE.stl
+  std::string scale = "full";               // model (1/50) | full
+  std::string motion = "static";            // static | pitch | heave | approach | FILE.csv
+  double startup = -1;                      // s; < 0: the time the wind takes to cross the domain once
+  double duration = 30;                     // s of frames after the start-up
+  double frame_interval = 0.02;             // s (thesis 6.3)
+  double stats_interval = -1;               // s between centre-plane samples; < 0: the frame interval
+  bool half_precision = true;               // float16 on disk
+  std::string out;                          // table path (.h5); the side-car .xdmf and the checkpoint .ckpt beside it
+  double checkpoint_seconds = 60;           // wall-clock interval between checkpoints
+  bool resume = true;                       // continue from a matching checkpoint
   const std::atomic<bool>* stop = nullptr;  // set (e.g. by SIGINT): checkpoint and return
   long stop_at_step = -1;                   // >= 0: checkpoint and return at this step (tests)
   struct Progress {
@@ -39,7 +39,7 @@ struct PrecomputeOptions {
 
 struct CentrePlaneStats {
   int nx = 0, nz = 0;
-  std::vector<double> x, z;        // ship-frame coordinates
+  std::vector<double> x, z;  // ship-frame coordinates
   std::vector<std::uint8_t> solid;
   long samples = 0;
   std::vector<double> sum, sum_sq;  // 3 per point

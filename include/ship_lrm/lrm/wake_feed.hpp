@@ -1,0 +1,59 @@
+// Feeding the LRM's faces from a ship-wake table (issue 5; thesis 5.2, 6.3): every open-boundary cell
+// of the LRM domain gets the table's air velocity at its position (trilinear in space, linear in time),
+// relative to the hub and in the domain's axes; the velocity faces impose it, the impedance faces take
+// it as their reference flow.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "ship_lrm/lrm/domain.hpp"
+#include "ship_lrm/wake/wake_table.hpp"
+
+namespace ship_lrm::lrm {
+
+using Mat3 = Eigen::Matrix3d;
+
+class WakeFaceFeed {
+ public:
+  explicit WakeFaceFeed(std::shared_ptr<wake::WakeTable> table);
+  // Where the domain is in the table's mean frame: hub position (m), rotation mr axes -> mean frame,
+  // hub velocity (m/s, mean frame). The domain's own motion (omega, accelerations) is set as before.
+  struct Pose {
+    Vec3 hub = Vec3::Zero();
+    Mat3 rotation = Mat3::Identity();
+    Vec3 hub_velocity = Vec3::Zero();
+  };
+  // Samples the table at time t (table time) for every boundary cell and passes it to the domain, when
+  // the faces are due: the table time moved on by a quarter frame interval, or the domain by a quarter
+  // cell or by a quarter cell's angle at its edge, since the last refresh (the thesis holds a frame for
+  // its whole 0.02 s interval, thesis 6.3). Returns whether it refreshed. force: refresh now.
+  bool apply(LrmDomain& domain, double t, const Pose& pose, bool force = false);
+  const wake::WakeTable& table() const { return *table_; }
+
+ private:
+  std::shared_ptr<wake::WakeTable> table_;
+  std::vector<Vec3> positions_;
+  std::size_t rebuilds_ = 0;
+  const LrmDomain* domain_ = nullptr;
+  bool fed_ = false;
+  double last_t_ = 0;
+  Pose last_;
+  std::vector<double> xyz_;
+  std::vector<wake::WakeSample> samples_;
+};
+
+// Cost of serving the faces against the LRM step (issue 5, acceptance 5): an LRM domain whose hub flies
+// at `speed` m/s towards the bow, `height` m above the landing spot (x = -12.75 m full scale), through
+// the table; the faces are refreshed before every LBM step.
+struct WakeFeedBenchmark {
+  std::string backend;
+  int nodes = 0, cells_per_edge = 0, steps = 0;
+  std::size_t boundary_cells = 0, window_loads = 0, refreshes = 0;
+  double step_seconds = 0, feed_seconds = 0;  // per LBM step
+  double feed_fraction() const { return feed_seconds / step_seconds; }
+  std::string to_json() const;
+};
+WakeFeedBenchmark run_wake_feed_benchmark(const std::string& table, const LrmConfig& cfg, int steps, double speed = 5.0,
+                                          double height = 8.0);
+
+}  // namespace ship_lrm::lrm
