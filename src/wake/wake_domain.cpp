@@ -55,9 +55,10 @@ ShipWakeDomain::ShipWakeDomain(const WakeConfig& cfg, std::shared_ptr<const Ship
   const Vec3 stem_domain(cfg.stem_position * l, 0.5 * ny_ * dx, (cfg.domain_height - cfg.sea_depth) * l);
   const Vec3 stem_ship(ship_->datum().stem_x, 0.0, ship_->datum().waterline);
   origin_ = stem_ship - stem_domain + Vec3::Constant(0.5 * dx);
-  // the hull, and where it can go, must stay clear of the faces
+  hull_box_ = mesh_box(*ship_);
+  // the hull must stay clear of the faces
   for (double t : {0.0}) {
-    for (const Vec3& c : mesh_box(*ship_)) {
+    for (const Vec3& c : hull_box_) {
       const Vec3 g = (motion_->position(c, t) - origin_) / dx;
       if (g.x() < 2 || g.x() > nx_ - 3 || g.y() < 2 || g.y() > ny_ - 3 || g.z() < 2)
         throw GeometryError("wake: the ship '" + ship_->name() + "' does not fit the domain (a corner of its box at cell (" +
@@ -93,7 +94,7 @@ std::vector<std::uint8_t> ShipWakeDomain::voxelise(double t) const {
         for (int i = 0; i < nx_; ++i) owner[i + static_cast<std::size_t>(nx_) * (j + static_cast<std::size_t>(ny_) * k)] = kSea;
   // the hull's box at time t, in cells
   Vec3 lo = Vec3::Constant(1e300), hi = -lo;
-  for (const Vec3& c : mesh_box(*ship_)) {
+  for (const Vec3& c : hull_box_) {
     const Vec3 g = (motion_->position(c, t) - origin_) / dx;
     lo = lo.cwiseMin(g);
     hi = hi.cwiseMax(g);
@@ -163,7 +164,7 @@ void ShipWakeDomain::step(long n) {
     if (motion_->is_static()) continue;
     const double t = time();
     double moved = 0;
-    for (const Vec3& c : mesh_box(*ship_)) moved = std::max(moved, (motion_->position(c, t) - motion_->position(c, voxel_time_)).norm());
+    for (const Vec3& c : hull_box_) moved = std::max(moved, (motion_->position(c, t) - motion_->position(c, voxel_time_)).norm());
     if (moved > cfg_.revoxelise_cells * units_.dx()) rebuild(t, true);
     solver_->set_wall_motion(0, hull_motion(t));
   }

@@ -101,7 +101,7 @@ class ShipWakeDomain {
   long steps_ = 0;
   double voxel_time_ = 0;
   std::size_t rebuilds_ = 0, ship_cells_ = 0;
-  std::array<int, 3> box_lo_{}, box_hi_{};  // lattice box the hull can reach
+  std::array<Vec3, 8> hull_box_;            // corners of the hull's box (ship frame)
   std::vector<std::uint8_t> owner_;         // 0 fluid, 1 sea, 2 ship
   std::unique_ptr<lbm::Solver> solver_;
   std::vector<std::uint8_t> voxelise(double t) const;
