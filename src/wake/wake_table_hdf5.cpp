@@ -93,6 +93,22 @@ std::string read_attr_string(hid_t obj, const char* name, const std::string& pat
   return s;
 }
 
+// Reads or writes the box [lo, lo + n) (x, y, z) of one frame of /velocity and /density.
+bool frame_box(hid_t vel, hid_t rho, bool write, hsize_t frame, const std::array<int, 3>& lo, const std::array<int, 3>& n, float* u,
+               float* r) {
+  const hsize_t sv[5] = {frame, hsize_t(lo[2]), hsize_t(lo[1]), hsize_t(lo[0]), 0},
+                cv[5] = {1, hsize_t(n[2]), hsize_t(n[1]), hsize_t(n[0]), 3};
+  const hsize_t sr[4] = {frame, hsize_t(lo[2]), hsize_t(lo[1]), hsize_t(lo[0])}, cr[4] = {1, hsize_t(n[2]), hsize_t(n[1]), hsize_t(n[0])};
+  Handle fsv(H5Dget_space(vel), H5Sclose), fsr(H5Dget_space(rho), H5Sclose);
+  if (H5Sselect_hyperslab(fsv, H5S_SELECT_SET, sv, nullptr, cv, nullptr) < 0 ||
+      H5Sselect_hyperslab(fsr, H5S_SELECT_SET, sr, nullptr, cr, nullptr) < 0)
+    return false;
+  Handle msv(H5Screate_simple(5, cv, nullptr), H5Sclose), msr(H5Screate_simple(4, cr, nullptr), H5Sclose);
+  if (write)
+    return H5Dwrite(vel, H5T_NATIVE_FLOAT, msv, fsv, H5P_DEFAULT, u) >= 0 && H5Dwrite(rho, H5T_NATIVE_FLOAT, msr, fsr, H5P_DEFAULT, r) >= 0;
+  return H5Dread(vel, H5T_NATIVE_FLOAT, msv, fsv, H5P_DEFAULT, u) >= 0 && H5Dread(rho, H5T_NATIVE_FLOAT, msr, fsr, H5P_DEFAULT, r) >= 0;
+}
+
 }  // namespace
 
 // ---- writer -----------------------------------------------------------------------------------------
@@ -170,13 +186,9 @@ void WakeTableWriter::append(const std::vector<float>& velocity, const std::vect
   const hsize_t dv[5] = {f + 1, nz, ny, nx, 3}, dr[4] = {f + 1, nz, ny, nx};
   ok(H5Dset_extent(impl_->vel, dv), "extending /velocity");
   ok(H5Dset_extent(impl_->rho, dr), "extending /density");
-  const hsize_t sv[5] = {f, 0, 0, 0, 0}, cv[5] = {1, nz, ny, nx, 3}, sr[4] = {f, 0, 0, 0}, cr[4] = {1, nz, ny, nx};
-  Handle fsv(H5Dget_space(impl_->vel), H5Sclose), fsr(H5Dget_space(impl_->rho), H5Sclose);
-  H5Sselect_hyperslab(fsv, H5S_SELECT_SET, sv, nullptr, cv, nullptr);
-  H5Sselect_hyperslab(fsr, H5S_SELECT_SET, sr, nullptr, cr, nullptr);
-  Handle msv(H5Screate_simple(5, cv, nullptr), H5Sclose), msr(H5Screate_simple(4, cr, nullptr), H5Sclose);
-  ok(H5Dwrite(impl_->vel, H5T_NATIVE_FLOAT, msv, fsv, H5P_DEFAULT, velocity.data()), "writing a velocity frame");
-  ok(H5Dwrite(impl_->rho, H5T_NATIVE_FLOAT, msr, fsr, H5P_DEFAULT, density.data()), "writing a density frame");
+  if (!frame_box(impl_->vel, impl_->rho, true, f, {0, 0, 0}, info_.shape, const_cast<float*>(velocity.data()),
+                 const_cast<float*>(density.data())))
+    throw TableError("wake table: writing frame " + std::to_string(f) + " failed (disk full?)");
   ++info_.frames;
   write_attr(impl_->file, "frames", std::vector<double>{static_cast<double>(info_.frames)});
   H5Fflush(impl_->file, H5F_SCOPE_GLOBAL);
@@ -311,16 +323,10 @@ WakeTable::~WakeTable() = default;
 
 void WakeTable::read_frame(int frame, std::vector<float>& velocity, std::vector<float>& density) const {
   if (frame < 0 || frame >= info_.frames) throw TableError("wake table: frame " + std::to_string(frame) + " out of range");
-  const hsize_t nx = info_.shape[0], ny = info_.shape[1], nz = info_.shape[2], f = static_cast<hsize_t>(frame);
+  const hsize_t f = static_cast<hsize_t>(frame);
   velocity.resize(3 * info_.points());
   density.resize(info_.points());
-  const hsize_t sv[5] = {f, 0, 0, 0, 0}, cv[5] = {1, nz, ny, nx, 3}, sr[4] = {f, 0, 0, 0}, cr[4] = {1, nz, ny, nx};
-  Handle fsv(H5Dget_space(impl_->vel), H5Sclose), fsr(H5Dget_space(impl_->rho), H5Sclose);
-  H5Sselect_hyperslab(fsv, H5S_SELECT_SET, sv, nullptr, cv, nullptr);
-  H5Sselect_hyperslab(fsr, H5S_SELECT_SET, sr, nullptr, cr, nullptr);
-  Handle msv(H5Screate_simple(5, cv, nullptr), H5Sclose), msr(H5Screate_simple(4, cr, nullptr), H5Sclose);
-  if (H5Dread(impl_->vel, H5T_NATIVE_FLOAT, msv, fsv, H5P_DEFAULT, velocity.data()) < 0 ||
-      H5Dread(impl_->rho, H5T_NATIVE_FLOAT, msr, fsr, H5P_DEFAULT, density.data()) < 0)
+  if (!frame_box(impl_->vel, impl_->rho, false, f, {0, 0, 0}, info_.shape, velocity.data(), density.data()))
     throw TableError("wake table '" + impl_->path + "': frame " + std::to_string(frame) + " is unreadable (corrupt or truncated file)");
 }
 
@@ -350,17 +356,10 @@ const WakeTable::Window& WakeTable::window(int frame, const std::array<int, 3>& 
       n[d] = hi[d] - lo[d] + 1;
     }
   const hsize_t f = static_cast<hsize_t>(frame);
-  const hsize_t sv[5] = {f, hsize_t(a[2]), hsize_t(a[1]), hsize_t(a[0]), 0}, cv[5] = {1, hsize_t(n[2]), hsize_t(n[1]), hsize_t(n[0]), 3};
-  const hsize_t sr[4] = {f, hsize_t(a[2]), hsize_t(a[1]), hsize_t(a[0])}, cr[4] = {1, hsize_t(n[2]), hsize_t(n[1]), hsize_t(n[0])};
   const std::size_t pts = static_cast<std::size_t>(n[0]) * n[1] * n[2];
   w.u.resize(3 * pts);
   w.rho.resize(pts);
-  Handle fsv(H5Dget_space(impl_->vel), H5Sclose), fsr(H5Dget_space(impl_->rho), H5Sclose);
-  H5Sselect_hyperslab(fsv, H5S_SELECT_SET, sv, nullptr, cv, nullptr);
-  H5Sselect_hyperslab(fsr, H5S_SELECT_SET, sr, nullptr, cr, nullptr);
-  Handle msv(H5Screate_simple(5, cv, nullptr), H5Sclose), msr(H5Screate_simple(4, cr, nullptr), H5Sclose);
-  if (H5Dread(impl_->vel, H5T_NATIVE_FLOAT, msv, fsv, H5P_DEFAULT, w.u.data()) < 0 ||
-      H5Dread(impl_->rho, H5T_NATIVE_FLOAT, msr, fsr, H5P_DEFAULT, w.rho.data()) < 0) {
+  if (!frame_box(impl_->vel, impl_->rho, false, f, a, n, w.u.data(), w.rho.data())) {
     w.frame = -1;
     throw TableError("wake table '" + impl_->path + "': frame " + std::to_string(frame) + " is unreadable (corrupt or truncated file)");
   }
