@@ -1,6 +1,7 @@
 // `ship_lrm wake`: the ship-wake precompute (issue 5), its presets, the ship mesh export, and the
 // centre-plane plots of thesis figs. 7.2, 7.3 and 7.6 (scripts/plot_wake.py).
 #include <atomic>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -89,10 +90,26 @@ std::function<int()> add_wake_command(CLI::App& app) {
     o.resume = !(*flags)[1];
     if (fs::exists(o.out) && !(o.resume && fs::exists(ckpt)) && !(*flags)[0]) {
       if (!preset->empty() && *preset == "default" && o.out == default_wake_table()) {
-        std::cout << "the default wake table is cached: " << o.out << "\n";
-        return 0;
+        // the cache is ours: reuse it when complete, else make it again
+        const int expected = static_cast<int>(std::floor(o.duration / o.frame_interval + 1e-9)) + 1;
+        int frames = 0;
+        bool same = false;
+        try {
+          const wake::WakeTable t(o.out);
+          frames = t.info().frames;
+          same = t.info().motion == o.motion && t.info().scale == o.scale && std::abs(t.info().frame_interval - o.frame_interval) < 1e-12;
+        } catch (const wake::TableError&) {
+        }
+        if (same && frames >= expected) {
+          std::cout << "the default wake table is cached: " << o.out << "\n";
+          return 0;
+        }
+        std::cout << "the cached default wake table " << o.out << " is incomplete or of another set-up (" << frames << " of " << expected
+                  << " frames, no checkpoint): making it again\n";
+        o.resume = false;
+      } else {
+        throw std::runtime_error(o.out + " exists; pass --overwrite to replace it");
       }
-      throw std::runtime_error(o.out + " exists; pass --overwrite to replace it");
     }
     if (!(*flags)[1] && fs::exists(ckpt)) std::cout << "resuming from the checkpoint " << ckpt << "\n";
     if (!mesh->empty()) {
