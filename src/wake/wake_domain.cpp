@@ -57,14 +57,12 @@ ShipWakeDomain::ShipWakeDomain(const WakeConfig& cfg, std::shared_ptr<const Ship
   origin_ = stem_ship - stem_domain + Vec3::Constant(0.5 * dx);
   hull_box_ = mesh_box(*ship_);
   // the hull must stay clear of the faces
-  for (double t : {0.0}) {
-    for (const Vec3& c : hull_box_) {
-      const Vec3 g = (motion_->position(c, t) - origin_) / dx;
-      if (g.x() < 2 || g.x() > nx_ - 3 || g.y() < 2 || g.y() > ny_ - 3 || g.z() < 2)
-        throw GeometryError("wake: the ship '" + ship_->name() + "' does not fit the domain (a corner of its box at cell (" +
-                            std::to_string(g.x()) + ", " + std::to_string(g.y()) + ", " + std::to_string(g.z()) + ") of " +
-                            std::to_string(nx_) + " x " + std::to_string(ny_) + " x " + std::to_string(nz_) + ")");
-    }
+  for (const Vec3& c : hull_box_) {
+    const Vec3 g = (motion_->position(c, 0.0) - origin_) / dx;
+    if (g.x() < 2 || g.x() > nx_ - 3 || g.y() < 2 || g.y() > ny_ - 3 || g.z() < 2)
+      throw GeometryError("wake: the ship '" + ship_->name() + "' does not fit the domain (a corner of its box at cell (" +
+                          std::to_string(g.x()) + ", " + std::to_string(g.y()) + ", " + std::to_string(g.z()) + ") of " +
+                          std::to_string(nx_) + " x " + std::to_string(ny_) + " x " + std::to_string(nz_) + ")");
   }
   rebuild(0.0, false);
 }
@@ -187,9 +185,8 @@ WakeTableInfo ShipWakeDomain::table_info() const {
   return info;
 }
 
-void ShipWakeDomain::table_frame(std::vector<float>& velocity, std::vector<float>& density) {
+void ShipWakeDomain::table_frame(const lbm::Fields& f, std::vector<float>& velocity, std::vector<float>& density) const {
   const WakeTableInfo info = table_info();
-  const lbm::Fields f = solver_->fields();
   const double scale = units_.dx() / units_.dt();
   const int jc = (ny_ - 1) / 2, j0 = jc - (info.shape[1] - 1) / 2, k0 = nz_ - info.shape[2];
   velocity.assign(3 * info.points(), 0.0f);
@@ -213,8 +210,7 @@ void ShipWakeDomain::table_frame(std::vector<float>& velocity, std::vector<float
       }
 }
 
-ShipWakeDomain::Plane ShipWakeDomain::centre_plane() {
-  const lbm::Fields f = solver_->fields();
+ShipWakeDomain::Plane ShipWakeDomain::centre_plane(const lbm::Fields& f) const {
   const double scale = units_.dx() / units_.dt();
   const int jc = (ny_ - 1) / 2;
   Plane pl;

@@ -267,7 +267,7 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
   }
   // the geometry of the statistics (on a resume the sums came from the checkpoint)
   {
-    const auto pl = domain.centre_plane();
+    const auto pl = domain.centre_plane(domain.fields());
     stats.nx = pl.nx;
     stats.nz = pl.nz;
     stats.x = pl.x;
@@ -302,20 +302,31 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
     }
     domain.step(1);
     const double t = domain.time();
-    if (t + 0.5 * dt >= frame_due(writer->frames())) {
-      std::vector<float> u, rho;
-      domain.table_frame(u, rho);
-      writer->append(u, rho);
-    }
-    if (t + 0.5 * dt >= next_sample * stats_interval) {
-      stats.add(domain.centre_plane(), -1);
-      ++next_sample;
-    }
-    if (periodic && t >= startup) {  // phase ensembles at 0, 1/4, 1/2, 3/4 of the period (thesis 7.2)
+    // what is due this step; the fields are copied once for all of it
+    const bool frame = t + 0.5 * dt >= frame_due(writer->frames());
+    const bool sample = t + 0.5 * dt >= next_sample * stats_interval;
+    int phase = -1;  // phase ensembles at 0, 1/4, 1/2, 3/4 of the period (thesis 7.2)
+    if (periodic && t >= startup) {
       const int slot = static_cast<int>(std::floor((t + 0.5 * dt) / (0.25 * period)));
       if (slot != last_phase_slot) {
         last_phase_slot = slot;
-        stats.add(domain.centre_plane(), ((slot % 4) + 4) % 4);
+        phase = ((slot % 4) + 4) % 4;
+      }
+    }
+    if (frame || sample || phase >= 0) {
+      const lbm::Fields f = domain.fields();
+      if (frame) {
+        std::vector<float> u, rho;
+        domain.table_frame(f, u, rho);
+        writer->append(u, rho);
+      }
+      if (sample || phase >= 0) {
+        const auto pl = domain.centre_plane(f);
+        if (sample) {
+          stats.add(pl, -1);
+          ++next_sample;
+        }
+        if (phase >= 0) stats.add(pl, phase);
       }
     }
     const auto now = Clock::now();

@@ -192,7 +192,6 @@ void WakeTableWriter::append(const std::vector<float>& velocity, const std::vect
   ++info_.frames;
   write_attr(impl_->file, "frames", std::vector<double>{static_cast<double>(info_.frames)});
   H5Fflush(impl_->file, H5F_SCOPE_GLOBAL);
-  write_xdmf();
 }
 
 void WakeTableWriter::write_statistic(const std::string& name, const std::vector<float>& values, const std::vector<int>& dims) {
@@ -216,6 +215,7 @@ void WakeTableWriter::write_statistic(const std::string& name, const std::vector
 
 void WakeTableWriter::close() {
   if (!impl_ || impl_->file < 0) return;
+  write_xdmf();  // once, not after every frame (it lists them all)
   impl_->vel.reset();
   impl_->rho.reset();
   impl_->file.reset();
@@ -229,7 +229,6 @@ void WakeTableWriter::write_xdmf() const {
   const std::string tmp = side.string() + ".tmp";
   std::ofstream x(tmp);
   const int nx = info_.shape[0], ny = info_.shape[1], nz = info_.shape[2], F = info_.frames;
-  const char* prec = info_.half_precision ? "4" : "4";  // read through HDF5's conversion into float32
   x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n  <Grid Name=\"wake\" GridType=\"Collection\" "
        "CollectionType=\"Temporal\">\n";
   for (int f = 0; f < F; ++f) {
@@ -242,20 +241,21 @@ void WakeTableWriter::write_xdmf() const {
     x << "     <DataItem Dimensions=\"3\" Format=\"XML\">" << info_.spacing << " " << info_.spacing << " " << info_.spacing
       << "</DataItem>\n";
     x << "    </Geometry>\n";
-    x << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n";
-    x << "     <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << nz << " " << ny << " " << nx << " 3\">\n";
-    x << "      <DataItem Dimensions=\"3 5\" Format=\"XML\">" << f << " 0 0 0 0 1 1 1 1 1 1 " << nz << " " << ny << " " << nx
-      << " 3</DataItem>\n";
-    x << "      <DataItem Dimensions=\"" << F << " " << nz << " " << ny << " " << nx << " 3\" NumberType=\"Float\" Precision=\"" << prec
-      << "\" Format=\"HDF\">" << file << ":/velocity</DataItem>\n";
-    x << "     </DataItem>\n    </Attribute>\n";
-    x << "    <Attribute Name=\"density\" AttributeType=\"Scalar\" Center=\"Node\">\n";
-    x << "     <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << nz << " " << ny << " " << nx << "\">\n";
-    x << "      <DataItem Dimensions=\"3 4\" Format=\"XML\">" << f << " 0 0 0 1 1 1 1 1 " << nz << " " << ny << " " << nx
-      << "</DataItem>\n";
-    x << "      <DataItem Dimensions=\"" << F << " " << nz << " " << ny << " " << nx << "\" NumberType=\"Float\" Precision=\"" << prec
-      << "\" Format=\"HDF\">" << file << ":/density</DataItem>\n";
-    x << "     </DataItem>\n    </Attribute>\n   </Grid>\n";
+    // one attribute: frame f of a dataset [frames][nz][ny][nx](components), read through HDF5's conversion
+    // into float32 whether stored as float16 or float32
+    const auto attribute = [&](const char* name, const char* type, const char* dataset, bool vector) {
+      const std::string dims = std::to_string(nz) + " " + std::to_string(ny) + " " + std::to_string(nx) + (vector ? " 3" : "");
+      x << "    <Attribute Name=\"" << name << "\" AttributeType=\"" << type << "\" Center=\"Node\">\n";
+      x << "     <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << dims << "\">\n";
+      x << "      <DataItem Dimensions=\"3 " << (vector ? 5 : 4) << "\" Format=\"XML\">" << f
+        << (vector ? " 0 0 0 0 1 1 1 1 1 1 " : " 0 0 0 1 1 1 1 1 ") << dims << "</DataItem>\n";
+      x << "      <DataItem Dimensions=\"" << F << " " << dims << "\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">" << file << ":"
+        << dataset << "</DataItem>\n";
+      x << "     </DataItem>\n    </Attribute>\n";
+    };
+    attribute("velocity", "Vector", "/velocity", true);
+    attribute("density", "Scalar", "/density", false);
+    x << "   </Grid>\n";
   }
   x << "  </Grid>\n </Domain>\n</Xdmf>\n";
   x.close();

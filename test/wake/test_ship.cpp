@@ -8,16 +8,13 @@
 
 #include "ship_lrm/wake/ship_geometry.hpp"
 #include "ship_lrm/wake/ship_motion.hpp"
+#include "temp_path.hpp"
 
 using namespace ship_lrm::wake;
 namespace fs = std::filesystem;
 
 namespace {
-std::string temp(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / "ship_lrm_test_ship";
-  fs::create_directories(d);
-  return (d / name).string();
-}
+std::string temp(const std::string& name) { return ship_lrm::test::temp_path("ship_lrm_test_ship", name); }
 }  // namespace
 
 TEST(ShipGeometry, NatoGdProportionsAndScale) {

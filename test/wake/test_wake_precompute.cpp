@@ -7,19 +7,13 @@
 
 #include "ship_lrm/lbm/lattice.hpp"
 #include "ship_lrm/wake/wake_precompute.hpp"
+#include "temp_path.hpp"
 
 using namespace ship_lrm::wake;
 namespace fs = std::filesystem;
 
 namespace {
-std::string temp(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / "ship_lrm_test_precompute";
-  fs::create_directories(d);
-  const fs::path p = d / name;
-  fs::remove(p);
-  fs::remove(p.string() + ".ckpt");
-  return p.string();
-}
+std::string temp(const std::string& name) { return ship_lrm::test::temp_path("ship_lrm_test_precompute", name); }
 }  // namespace
 
 TEST(WakePrecompute, TinyPresetWritesAReadableTableWithTheFreeStreamUpstream) {

@@ -8,17 +8,14 @@
 #include <random>
 
 #include "ship_lrm/wake/wake_table.hpp"
+#include "temp_path.hpp"
 
 using namespace ship_lrm::wake;
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string temp(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / "ship_lrm_test_table";
-  fs::create_directories(d);
-  return (d / name).string();
-}
+std::string temp(const std::string& name) { return ship_lrm::test::temp_path("ship_lrm_test_table", name); }
 
 WakeTableInfo grid(bool half) {
   WakeTableInfo i;

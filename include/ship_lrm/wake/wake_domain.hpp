@@ -66,11 +66,13 @@ class ShipWakeDomain {
   // Advance n steps; the hull moves with the ship motion.
   void step(long n = 1);
 
-  // The tabulated region (grid = lattice nodes) and one frame of it in physical units: velocity (3 per
-  // point) in m/s in the mean frame, density in kg/m^3; inside solids the body's velocity and the
-  // free density.
+  // The lattice fields now (one copy serves table_frame and centre_plane in the same step).
+  lbm::Fields fields() { return solver_->fields(); }
+  // The tabulated region (grid = lattice nodes) and one frame of it in physical units from `f`
+  // (fields()): velocity (3 per point) in m/s in the mean frame, density in kg/m^3; inside solids the
+  // body's velocity and the free density.
   WakeTableInfo table_info() const;
-  void table_frame(std::vector<float>& velocity, std::vector<float>& density);
+  void table_frame(const lbm::Fields& f, std::vector<float>& velocity, std::vector<float>& density) const;
   // The centre plane y = 0: velocity (m/s, 3 per point, x fastest then z) and a solid flag.
   struct Plane {
     int nx = 0, nz = 0;
@@ -78,7 +80,7 @@ class ShipWakeDomain {
     std::vector<std::uint8_t> solid;
     std::vector<double> x, z;  // ship-frame coordinates of the columns and rows
   };
-  Plane centre_plane();
+  Plane centre_plane(const lbm::Fields& f) const;
 
   // Checkpoint: the step count, the pose the walls were voxelised at and the populations. restore()
   // re-voxelises at that pose and puts the populations back (ConfigError when they do not fit).
@@ -101,8 +103,8 @@ class ShipWakeDomain {
   long steps_ = 0;
   double voxel_time_ = 0;
   std::size_t rebuilds_ = 0, ship_cells_ = 0;
-  std::array<Vec3, 8> hull_box_;            // corners of the hull's box (ship frame)
-  std::vector<std::uint8_t> owner_;         // 0 fluid, 1 sea, 2 ship
+  std::array<Vec3, 8> hull_box_;     // corners of the hull's box (ship frame)
+  std::vector<std::uint8_t> owner_;  // 0 fluid, 1 sea, 2 ship
   std::unique_ptr<lbm::Solver> solver_;
   std::vector<std::uint8_t> voxelise(double t) const;
   void rebuild(double t, bool carry);

@@ -45,7 +45,7 @@ struct WakeTableInfo {
 };
 
 // Writes frames one after the other; each append is flushed, so a stopped run leaves a valid table
-// of the frames written so far (the side-car is rewritten with them).
+// of the frames written so far. The side-car is written on close (a resumed run writes it then).
 class WakeTableWriter {
  public:
   // Creates `path` (replacing it) or, with resume, opens it and keeps its first `keep_frames` frames.
