@@ -10,7 +10,7 @@ PACKAGES=(
   libeigen3-dev libcli11-dev libgtest-dev libgmock-dev libyaml-cpp-dev libhdf5-dev
   catkin ros-core-dev libroscpp-dev ros-message-generation ros-message-runtime
   libnodelet-dev libnodeletlib-dev pluginlib-dev python3-rostest librostest-dev
-  python3-matplotlib python3-numpy python3-scipy
+  python3-matplotlib python3-numpy python3-scipy python3-pywt
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -114,9 +114,20 @@ void LrmDomain::update_walls() {
     rebuild(true);
     ++rebuilds_;
   }
-  // the motions themselves change without a rebuild
+  push_wall_motions();  // the motions themselves change without a rebuild
+}
+
+void LrmDomain::push_wall_motions() {
   for (size_t w = 0, slot = 0; w < walls_.size(); ++w)
     if (wall_moves_[w]) solver_->set_wall_motion(static_cast<int>(slot++), lattice_motion(walls_[w]->motion()));
+}
+
+void LrmDomain::update_wall_motions() {
+  for (size_t w = 0; w < walls_.size(); ++w) {
+    const RigidMotion m = walls_[w]->motion();
+    if (wall_moves_[w] == (m.velocity.isZero(0) && m.omega.isZero(0))) return update_walls();
+  }
+  push_wall_motions();
 }
 
 void LrmDomain::rebuild(bool carry_flow) {

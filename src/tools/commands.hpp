@@ -19,6 +19,7 @@ std::function<int()> add_trim_command(CLI::App& app);
 std::function<int()> add_doublet_command(CLI::App& app);
 std::function<int()> add_sweep_command(CLI::App& app);
 std::function<int()> add_wake_command(CLI::App& app);
+std::function<int()> add_approach_command(CLI::App& app);
 // Where `ship_lrm wake --preset default` keeps its table: $SHIP_LRM_WAKE_CACHE or ~/.cache/ship_lrm.
 std::string default_wake_table();
 

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   actions.push_back(ship_lrm::tools::add_doublet_command(app));
   actions.push_back(ship_lrm::tools::add_sweep_command(app));
   actions.push_back(ship_lrm::tools::add_wake_command(app));
+  actions.push_back(ship_lrm::tools::add_approach_command(app));
 #endif
   try {
     app.parse(argc, argv);

@@ -14,10 +14,12 @@ Mat3 ShipMotion::rotation(const ShipPose& s) {
   return (Eigen::AngleAxisd(s.pitch, Vec3::UnitY()) * Eigen::AngleAxisd(s.roll, Vec3::UnitX())).toRotationMatrix();
 }
 
-Vec3 ShipMotion::position(const Vec3& p, double t) const {
+ShipPlacement ShipMotion::placement(double t) const {
   const ShipPose s = pose(t);
-  return centre_ + rotation(s) * (p - centre_) - s.heave * Vec3::UnitZ();
+  return {rotation(s), centre_, s.heave};
 }
+
+Vec3 ShipMotion::position(const Vec3& p, double t) const { return placement(t).to_mean(p); }
 
 Vec3 ShipMotion::omega(double t) const {
   const ShipPose s = pose(t);

@@ -97,16 +97,13 @@ std::vector<std::uint8_t> ShipWakeDomain::voxelise(double t) const {
     lo = lo.cwiseMin(g);
     hi = hi.cwiseMax(g);
   }
-  const ShipPose pose = motion_->pose(t);
-  const Mat3 Rt = ShipMotion::rotation(pose).transpose();
-  const Vec3 c = motion_->centre();
+  const ShipPlacement place = motion_->placement(t);
   for (int k = std::max(0, int(std::floor(lo.z())) - 1); k <= std::min(nz_ - 1, int(std::ceil(hi.z())) + 1); ++k)
     for (int j = std::max(0, int(std::floor(lo.y())) - 1); j <= std::min(ny_ - 1, int(std::ceil(hi.y())) + 1); ++j)
       for (int i = std::max(0, int(std::floor(lo.x())) - 1); i <= std::min(nx_ - 1, int(std::ceil(hi.x())) + 1); ++i) {
         const std::size_t n = i + static_cast<std::size_t>(nx_) * (j + static_cast<std::size_t>(ny_) * k);
         if (owner[n] != kFluid) continue;
-        const Vec3 body = c + Rt * (position(i, j, k) + pose.heave * Vec3::UnitZ() - c);
-        if (ship_->inside(body)) owner[n] = kShip;
+        if (ship_->inside(place.to_body(position(i, j, k)))) owner[n] = kShip;
       }
   return owner;
 }
@@ -192,8 +189,7 @@ void ShipWakeDomain::table_frame(const lbm::Fields& f, std::vector<float>& veloc
   velocity.assign(3 * info.points(), 0.0f);
   density.assign(info.points(), static_cast<float>(cfg_.density));
   const double t = time();
-  const ShipPose pose = motion_->pose(t);
-  const Mat3 Rt = ShipMotion::rotation(pose).transpose();
+  const ShipPlacement place = motion_->placement(t);
   std::size_t p = 0;
   for (int k = k0; k < nz_; ++k)
     for (int j = j0; j < j0 + info.shape[1]; ++j)
@@ -203,8 +199,7 @@ void ShipWakeDomain::table_frame(const lbm::Fields& f, std::vector<float>& veloc
           for (int d = 0; d < 3; ++d) velocity[3 * p + d] = static_cast<float>(f.u[3 * n + d] * scale);
           density[p] = static_cast<float>(f.rho[n] * cfg_.density);
         } else if (owner_[n] == kShip) {
-          const Vec3 body = motion_->centre() + Rt * (position(i, j, k) + pose.heave * Vec3::UnitZ() - motion_->centre());
-          const Vec3 v = motion_->velocity(body, t);
+          const Vec3 v = motion_->velocity(place.to_body(position(i, j, k)), t);
           for (int d = 0; d < 3; ++d) velocity[3 * p + d] = static_cast<float>(v[d]);
         }
       }

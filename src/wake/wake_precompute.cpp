@@ -220,9 +220,7 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
   auto ship = std::shared_ptr<const ShipGeometry>(make_ship(opt.ship, opt.scale));
   const double scale = ship_scale(opt.scale);
   const ShipDatum& sd = ship->datum();
-  // centre of motion: mid-length on the waterline [EST; the NRC data set's centre is not available here]
-  const Vec3 centre(sd.stern_x + 0.5 * sd.length, 0.0, sd.waterline);
-  auto motion = std::shared_ptr<const ShipMotion>(make_motion(opt.motion, scale, centre));
+  auto motion = std::shared_ptr<const ShipMotion>(make_motion(opt.motion, scale, motion_centre(sd)));
   ShipWakeDomain domain(opt.domain, ship, motion);
   const double dt = domain.units().dt();
   const double startup = opt.startup >= 0 ? opt.startup : opt.domain.domain_length * sd.length / opt.domain.wind;

@@ -98,6 +98,9 @@ class LrmDomain {
   // cell; the domain then stays as it was.
   void add_wall(std::shared_ptr<WallSurface> wall);
   void update_walls();
+  // Walls whose velocity changed but not (visibly) their place: the new motions go to the solver
+  // without re-voxelising (a wall that starts or stops moving re-voxelises).
+  void update_wall_motions();
   std::size_t wall_cells() const { return wall_cells_; }
   std::size_t rebuilds() const { return rebuilds_; }  // lattice rebuilds after the first (moving walls)
   // Aerodynamic force on the blades over azimuth (N, mr axes); the fluid gets the opposite.
@@ -126,6 +129,7 @@ class LrmDomain {
   std::size_t wall_cells_ = 0, rebuilds_ = 0;
   std::vector<float> disk_forces_;  // lattice force densities of the disk cells (kept across rebuilds)
   void rebuild(bool carry_flow);
+  void push_wall_motions();
   lbm::WallMotion lattice_motion(const RigidMotion& m) const;
 };
 

@@ -7,22 +7,17 @@
 #include <string>
 
 #include "ship_lrm/lrm/domain.hpp"
+#include "ship_lrm/lrm/ship_walls.hpp"
 #include "ship_lrm/wake/wake_table.hpp"
 
 namespace ship_lrm::lrm {
 
-using Mat3 = Eigen::Matrix3d;
-
 class WakeFaceFeed {
  public:
   explicit WakeFaceFeed(std::shared_ptr<wake::WakeTable> table);
-  // Where the domain is in the table's mean frame: hub position (m), rotation mr axes -> mean frame,
-  // hub velocity (m/s, mean frame). The domain's own motion (omega, accelerations) is set as before.
-  struct Pose {
-    Vec3 hub = Vec3::Zero();
-    Mat3 rotation = Mat3::Identity();
-    Vec3 hub_velocity = Vec3::Zero();
-  };
+  // Where the domain is in the table's mean frame (hub, rotation, hub velocity; its own rotation and
+  // accelerations reach the domain through LrmDomain::set_motion as before).
+  using Pose = DomainPose;
   // Samples the table at time t (table time) for every boundary cell and passes it to the domain, when
   // the faces are due: the table time moved on by a quarter frame interval, or the domain by a quarter
   // cell or by a quarter cell's angle at its edge, since the last refresh (the thesis holds a frame for

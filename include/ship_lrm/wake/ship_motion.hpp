@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ship_lrm/rotor/inflow_model.hpp"
+#include "ship_lrm/wake/ship_geometry.hpp"
 
 namespace ship_lrm::wake {
 using rotor::Vec3;
@@ -28,6 +29,15 @@ struct ShipPose {
   double heave_rate = 0, roll_rate = 0, pitch_rate = 0;  // m/s, rad/s
 };
 
+// Where the ship is at one instant: body points (ship frame) <-> positions in the mean frame.
+struct ShipPlacement {
+  Mat3 rotation = Mat3::Identity();  // ship -> mean frame
+  Vec3 centre = Vec3::Zero();        // centre of motion, ship frame
+  double heave = 0;                  // m, up
+  Vec3 to_mean(const Vec3& p) const { return centre + rotation * (p - centre) - heave * Vec3::UnitZ(); }
+  Vec3 to_body(const Vec3& x) const { return centre + rotation.transpose() * (x + heave * Vec3::UnitZ() - centre); }
+};
+
 class ShipMotion {
  public:
   explicit ShipMotion(const Vec3& centre) : centre_(centre) {}
@@ -38,6 +48,7 @@ class ShipMotion {
   const Vec3& centre() const { return centre_; }
   // Rotation ship -> mean frame and the position and velocity (mean frame) of body point p at time t.
   static Mat3 rotation(const ShipPose& s);
+  ShipPlacement placement(double t) const;
   Vec3 position(const Vec3& p, double t) const;
   Vec3 velocity(const Vec3& p, double t) const;
   // Angular velocity (mean frame) and velocity of the centre of motion.
@@ -94,5 +105,12 @@ class TableMotion final : public ShipMotion {
 // seas, Hs 2 m, Tp 15 s, 15 kn: see docs/design.md); or a path to a CSV file (TableMotion).
 // `scale` is the geometry scale (1/50 model, 1 full); `centre` the centre of motion (ship frame).
 std::unique_ptr<ShipMotion> make_motion(const std::string& which, double scale, const Vec3& centre);
+
+// The centre of motion used everywhere (the precompute and the ship walls of the LRM): mid-length on
+// the waterline [EST; the NRC data set's centre is not available here].
+inline Vec3 motion_centre(const ShipDatum& d) { return Vec3(d.stern_x + 0.5 * d.length, 0.0, d.waterline); }
+// The landing spot (ship frame): on the centreline, on the deck (z = 0, the hangar-door base), midway
+// between the stern and the hangar door (x = 0), as the ship frame's definition places them.
+inline Vec3 landing_spot(const ShipDatum& d) { return Vec3(0.5 * d.stern_x, 0.0, 0.0); }
 
 }  // namespace ship_lrm::wake

@@ -1,0 +1,161 @@
+#!/usr/bin/env python3
+"""Rotor loads of a ship approach (thesis 9.2): time series of Delta C_T, C_Mx, C_My against their
+values at the end of the start-up (fig. 9.4), their amplitude over time and frequency from a
+continuous wavelet transform with complex Morlet wavelets of centre frequency and bandwidth 1 Hz
+(pywt 'cmor1.0-1.0', fig. 9.5), and a summary CSV.
+
+    analyze_approach.py approach.csv --out DIR [--startup 5]
+
+Input: the CSV of `ship_lrm approach` (columns time_s, CT, CMx, CMy, distance_to_spot_m,
+height_above_deck_m). Output in DIR: approach.png, approach_wavelets.png, approach_summary.csv.
+
+The wavelet amplitude is calibrated so that a sinusoid of amplitude A shows A at its frequency (the
+transform of a unit sinusoid is computed at every scale and divided out). The series is mirrored at
+both ends before the transform, the smooth continuation the thesis assumes.
+"""
+import argparse
+import csv
+import os
+import sys
+
+import numpy as np
+
+COEFFS = [("CT", r"$\Delta C_T$"), ("CMx", r"$\Delta C_{Mx}$"), ("CMy", r"$\Delta C_{My}$")]
+BAND = (0.02, 2.0)  # Hz, the band that matters for pilot-induced oscillations (thesis 9.2)
+WAVELET = "cmor1.0-1.0"  # bandwidth 1, centre frequency 1 Hz (thesis 9.2)
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        sys.exit(f"analyze_approach: {path} has no rows")
+    need = ["time_s", "CT", "CMx", "CMy", "distance_to_spot_m", "height_above_deck_m", "speed_m_s"]
+    missing = [c for c in need if c not in rows[0]]
+    if missing:
+        sys.exit(f"analyze_approach: {path} lacks the columns {', '.join(missing)} (not a `ship_lrm approach` CSV?)")
+    data = {c: np.array([float(r[c]) for r in rows]) for c in need}
+    if not np.all(np.isfinite(data["time_s"])) or np.any(np.diff(data["time_s"]) <= 0):
+        sys.exit(f"analyze_approach: {path}: time_s must increase strictly")
+    return data
+
+
+def uniform(t, y):
+    """Resample onto a uniform grid of the median spacing (the CSV rows are nearly uniform)."""
+    dt = float(np.median(np.diff(t)))
+    tu = np.arange(t[0], t[-1] + 0.5 * dt, dt)
+    return tu, np.interp(tu, t, y), dt
+
+
+def wavelet_amplitude(y, dt, freqs):
+    import pywt
+
+    fc = pywt.central_frequency(WAVELET)
+    scales = fc / (freqs * dt)
+    n = len(y)
+    pad = min(n - 1, int(np.ceil(3.0 / (freqs.min() * dt))))  # mirror: the smooth continuation
+    def cwt(x):
+        xp = np.concatenate([x[pad:0:-1], x, x[-2:-pad - 2:-1]]) if pad > 0 else x
+        c, _ = pywt.cwt(xp, scales, WAVELET, sampling_period=dt)
+        return np.abs(c[:, pad:pad + n])
+    amp = cwt(y - np.mean(y))
+    # calibration: the response to a unit sinusoid at each frequency, in the middle of the series
+    t = np.arange(n) * dt
+    gain = np.empty(len(freqs))
+    for k, f in enumerate(freqs):
+        c, _ = pywt.cwt(np.sin(2 * np.pi * f * t), scales[k:k + 1], WAVELET, sampling_period=dt)
+        gain[k] = np.median(np.abs(c[0, n // 4:3 * n // 4])) if n >= 8 else 1.0
+    gain[~(gain > 1e-12)] = np.nan  # a scale the series is too short for: no amplitude
+    return amp / gain[:, None]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("csv")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--startup", type=float, default=5.0, help="s: the Delta is taken against this time (thesis 9.2)")
+    a = ap.parse_args()
+    if a.csv.endswith(".bag"):
+        sys.exit("analyze_approach: bags come with the ROS layer (issue 6); give the CSV of `ship_lrm approach`")
+    d = read_csv(a.csv)
+    t = d["time_s"]
+    if a.startup >= t[-1]:
+        sys.exit(f"analyze_approach: the start-up {a.startup} s is not before the end of the series ({t[-1]} s)")
+    os.makedirs(a.out, exist_ok=True)
+    k0 = int(np.searchsorted(t, a.startup))
+    after = t >= a.startup
+    delta = {c: d[c] - d[c][k0] for c, _ in COEFFS}
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(4, 1, figsize=(9, 10), sharex=True)
+    ax[0].plot(t, d["distance_to_spot_m"], label="distance behind the landing spot (m)")
+    ax[0].plot(t, d["height_above_deck_m"], label="cg above the deck (m)")
+    ax[0].legend(loc="upper right")
+    for i, (c, label) in enumerate(COEFFS):
+        ax[i + 1].plot(t, delta[c], lw=0.8)
+        ax[i + 1].set_ylabel(label)
+    for x in ax:
+        x.axvspan(t[0], a.startup, color="r", alpha=0.12, lw=0)
+        x.grid(alpha=0.3)
+    ax[-1].set_xlabel("t (s)")
+    ax[0].set_title(f"Approach: rotor loads against their values at t = {a.startup:g} s (start-up shaded; thesis fig. 9.4)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(a.out, "approach.png"), dpi=110)
+    plt.close(fig)
+
+    summary = []
+    have_pywt = True
+    try:
+        import pywt  # noqa: F401
+    except ImportError:
+        have_pywt = False
+        print("analyze_approach: warning: python3-pywt is missing; no wavelet plot", file=sys.stderr)
+    tu = None
+    if have_pywt and after.sum() > 16:
+        ta = t[after]
+        fmax = min(5.0, 0.4 / float(np.median(np.diff(ta))))
+        freqs = np.geomspace(0.01, fmax, 60)
+        fig, ax = plt.subplots(3, 1, figsize=(9, 9), sharex=True)
+        for i, (c, label) in enumerate(COEFFS):
+            tu, yu, dt = uniform(ta, delta[c][after])
+            amp = wavelet_amplitude(yu, dt, freqs)
+            m = ax[i].pcolormesh(tu, freqs, amp, shading="auto", cmap="viridis")
+            ax[i].set_yscale("log")
+            for f in BAND:
+                ax[i].axhline(f, color="r", ls="--", lw=1)
+            ax[i].set_ylabel(f"{label}\nfrequency (Hz)")
+            fig.colorbar(m, ax=ax[i], label="amplitude")
+            inband = (freqs >= BAND[0]) & (freqs <= BAND[1])
+            upper = (freqs >= 0.2) & (freqs <= BAND[1])
+            summary.append((c, np.nanmean(amp[inband]), np.nanmean(amp[upper])))
+        ax[-1].set_xlabel("t (s)")
+        ax[0].set_title("Wavelet amplitude, complex Morlet 1 Hz / 1 Hz (thesis fig. 9.5); red: 0.02-2 Hz")
+        fig.tight_layout()
+        fig.savefig(os.path.join(a.out, "approach_wavelets.png"), dpi=110)
+        plt.close(fig)
+
+    # phases: the start-up, the approach (moving), the hover (thesis 9.1)
+    moving = t[(t >= a.startup) & (d["speed_m_s"] > 1e-9)]
+    hover_from = moving[-1] if len(moving) else a.startup
+    phases = [("start-up", t[0], a.startup), ("approach", a.startup, hover_from), ("hover", hover_from, t[-1] + 1)]
+    with open(os.path.join(a.out, "approach_summary.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["coefficient", "value_at_startup", "phase", "t_from_s", "t_to_s", "delta_mean", "delta_std", "delta_min", "delta_max",
+                    "wavelet_mean_amplitude_0.02_2Hz", "wavelet_mean_amplitude_0.2_2Hz"])
+        for c, _ in COEFFS:
+            wav = next(((b, u) for n, b, u in summary if n == c), (float("nan"), float("nan")))
+            for name, lo, hi in phases:
+                sel = (t >= lo) & (t < hi)
+                if not sel.any() or hi <= lo:
+                    continue
+                x = delta[c][sel]
+                w.writerow([c, f"{d[c][k0]:.6g}", name, f"{lo:g}", f"{min(hi, t[-1]):g}", f"{x.mean():.4g}", f"{x.std():.4g}",
+                            f"{x.min():.4g}", f"{x.max():.4g}", f"{wav[0]:.4g}", f"{wav[1]:.4g}"])
+    print("wrote", ", ".join(os.path.join(a.out, n) for n in ["approach.png", "approach_wavelets.png", "approach_summary.csv"]))
+
+
+if __name__ == "__main__":
+    main()

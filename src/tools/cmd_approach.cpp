@@ -1,0 +1,129 @@
+// `ship_lrm approach`: the ship approach of thesis 9.1 in simulated time, ROS-free (lrm/approach.hpp).
+// Writes approach.csv (one row per output interval) and, through scripts/analyze_approach.py, the time
+// series of Delta C_T, C_Mx, C_My and their wavelet amplitudes (thesis figs. 9.4, 9.5) with a summary.
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+#include "commands.hpp"
+#include "ship_lrm/flight/parameters.hpp"
+#include "ship_lrm/lrm/approach.hpp"
+
+namespace ship_lrm::tools {
+namespace fs = std::filesystem;
+
+namespace {
+void write_header(std::ostream& o) {
+  o << "time_s,x_m,y_m,z_m,distance_to_spot_m,height_above_deck_m,speed_m_s,thrust_N,CT,CMx,CMy,main_power_kW,inflow_x_m_s,"
+       "inflow_y_m_s,inflow_z_m_s,ship_heave_m,ship_pitch_deg,lrm_wall_cells,lrm_voxelisations,face_refreshes\n";
+}
+void write_row(std::ostream& o, const lrm::ApproachSample& s) {
+  o << std::setprecision(9) << s.time << ',' << s.cg.x() << ',' << s.cg.y() << ',' << s.cg.z() << ',' << s.distance << ','
+    << s.height_above_deck << ',' << s.speed << ',' << s.thrust << ',' << s.ct << ',' << s.cmx << ',' << s.cmy << ','
+    << s.main_power / 1000.0 << ',' << s.inflow_mean.x() << ',' << s.inflow_mean.y() << ',' << s.inflow_mean.z() << ',' << s.ship_heave
+    << ',' << s.ship_pitch * 180.0 / M_PI << ',' << s.wall_cells << ',' << s.voxelisations << ',' << s.face_refreshes << '\n';
+}
+}  // namespace
+
+std::function<int()> add_approach_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("approach",
+                                 "Bo 105 approach onto the ship of a wake table, fixed controls along the path of thesis 9.1, "
+                                 "LRM (or Pitt-Peters) inflow, in simulated time");
+  struct Opts {
+    lrm::ApproachConfig cfg;
+    std::string out, config, backend = "auto";
+    double output_interval = 0.01;
+    bool overwrite = false, no_plot = false, no_ship = false, no_wake = false;
+  };
+  auto o = std::make_shared<Opts>();
+  o->cfg.lrm.nodes = 32;
+  cmd->add_option("--wake", o->cfg.table, "wake table (HDF5) of a full-scale ship; default: the cached default table");
+  cmd->add_option("--inflow", o->cfg.inflow, "lrm, or pitt_peters (the table's air at the hub as the wind)")
+      ->check(CLI::IsMember({"lrm", "pitt_peters"}))
+      ->capture_default_str();
+  cmd->add_option("--N", o->cfg.lrm.nodes, "lrm: lattice nodes per 4R")->check(CLI::Range(16, 512))->capture_default_str();
+  cmd->add_option("--reach", o->cfg.lrm.reach, "lrm: domain edge / 4R (a >= 1)")->check(CLI::Range(1.0, 8.0))->capture_default_str();
+  cmd->add_option("--backend", o->backend, "lrm: cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
+  cmd->add_option("--duration", o->cfg.duration, "s simulated (thesis 9.1: 30)")->capture_default_str();
+  cmd->add_option("--startup", o->cfg.startup, "s of start-up; the Delta coefficients are taken against this time")->capture_default_str();
+  cmd->add_option("--start-distance", o->cfg.path.start_distance, "m behind the landing spot at t = 0")->capture_default_str();
+  cmd->add_option("--height", o->cfg.path.height, "m, cg above the deck")->capture_default_str();
+  cmd->add_option("--lateral", o->cfg.path.lateral, "m, cg starboard of the centreline")->capture_default_str();
+  cmd->add_option("--speed", o->cfg.path.speed, "m/s towards the bow, relative to the ship")->capture_default_str();
+  cmd->add_option("--decelerate-at", o->cfg.path.decelerate_at, "s, start of the linear deceleration")->capture_default_str();
+  cmd->add_option("--hover-at", o->cfg.path.hover_at, "s, hover from here")->capture_default_str();
+  cmd->add_option("--trim-speed", o->cfg.trim_speed, "m/s airspeed of the fixed controls' trim (default: |wind| + speed)");
+  cmd->add_option("--table-offset", o->cfg.table_offset, "s into the table at t = 0")->capture_default_str();
+  cmd->add_flag("--no-ship", o->no_ship, "lrm: no ship or sea walls in the LRM domain");
+  cmd->add_flag("--no-wake", o->no_wake, "the table's free stream instead of its wake (thesis appendix VIII)");
+  cmd->add_option("--output-interval", o->output_interval, "s between CSV rows")->check(CLI::Range(1e-4, 10.0))->capture_default_str();
+  cmd->add_option("--out", o->out, "output directory (approach.csv, approach.png, approach_wavelets.png, approach_summary.csv)")
+      ->required();
+  cmd->add_option("--config", o->config, "helicopter parameter file (default: the shipped config/bo105.yaml)");
+  cmd->add_flag("--overwrite", o->overwrite, "replace existing output files");
+  cmd->add_flag("--no-plot", o->no_plot, "write the CSV only");
+  return [o, cmd]() -> int {
+    if (!cmd->parsed()) return -1;
+    lrm::ApproachConfig cfg = o->cfg;
+    cfg.lrm.backend = lbm::parse_backend(o->backend);
+    cfg.ship_walls = !o->no_ship;
+    cfg.wake = !o->no_wake;
+    if (cfg.table.empty()) {
+      cfg.table = default_wake_table();
+      if (!fs::exists(cfg.table))
+        throw lbm::ConfigError("the default wake table " + cfg.table + " does not exist yet; make it with `ship_lrm wake --preset default`");
+    } else if (!fs::exists(cfg.table)) {
+      throw lbm::ConfigError("wake table '" + cfg.table + "' not found; make one with `ship_lrm wake --ship natogd --scale full ...` "
+                             "or `ship_lrm wake --preset default --out " + cfg.table + "`");
+    }
+    const fs::path dir(o->out);
+    prepare_output(dir, {"approach.csv", "approach.png", "approach_wavelets.png", "approach_summary.csv"}, o->overwrite);
+    const flight::HelicopterParameters p = o->config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(o->config);
+    std::cout << "approach: trimming the Bo 105 (Pitt-Peters) for the fixed controls ...\n" << std::flush;
+    lrm::ShipApproach run(cfg, p);
+    const auto& info = run.table_info();
+    std::cout << "approach: ship " << info.ship << " (" << info.motion << "), wind " << -info.free_stream[0] << " m/s, trim at "
+              << run.trim().controls.collective << " % collective, pitch " << run.trim().pitch * 180 / M_PI << " deg; inflow "
+              << cfg.inflow;
+    if (auto* d = run.lrm_domain())
+      std::cout << " (N = " << d->config().nodes << ", a = " << d->config().reach << ", " << d->cells_per_edge() << "^3 cells, "
+                << d->solver().backend_name() << ", LBM step " << d->time_step() * 1e3 << " ms)";
+    std::cout << "\n";
+    std::ofstream csv(dir / "approach.csv");
+    write_header(csv);
+    write_row(csv, run.sample());
+    double next_row = o->output_interval, next_report = 2.0;
+    while (!run.done()) {
+      run.step();
+      const lrm::ApproachSample& s = run.sample();
+      if (!std::isfinite(s.thrust)) throw std::runtime_error("approach: the rotor loads are not finite at t = " + std::to_string(s.time) + " s");
+      if (s.time >= next_row - 0.5 * run.time_step()) {
+        write_row(csv, s);
+        next_row += o->output_interval;
+      }
+      if (s.time >= next_report - 0.5 * run.time_step()) {
+        std::cout << std::fixed << std::setprecision(1) << "  t = " << s.time << " s, " << s.distance << " m behind the spot, "
+                  << s.height_above_deck << " m above the deck, C_T " << std::setprecision(5) << s.ct << ", LRM wall cells "
+                  << s.wall_cells << ", t_clock/t_sim " << std::setprecision(2) << run.wall_seconds() / s.time << "\n"
+                  << std::defaultfloat << std::flush;
+        next_report += 2.0;
+      }
+    }
+    csv.close();
+    std::cout << "wrote " << (dir / "approach.csv").string() << " (" << run.sample().time << " s simulated in " << run.wall_seconds()
+              << " s: t_clock/t_sim " << run.wall_seconds() / run.sample().time << ")\n";
+    if (!o->no_plot) {
+      const std::string script = flight::shipped_directory("SHIP_LRM_SCRIPTS_DIR", "scripts") + "/analyze_approach.py";
+      const std::string c = "/usr/bin/env python3 '" + script + "' '" + (dir / "approach.csv").string() + "' --out '" + dir.string() +
+                            "' --startup " + std::to_string(cfg.startup);
+      if (std::system(c.c_str()) != 0)
+        std::cerr << "ship_lrm: warning: the analysis failed (needs python3 with numpy, matplotlib and pywt); the CSV is complete\n";
+    }
+    return 0;
+  };
+}
+
+}  // namespace ship_lrm::tools
