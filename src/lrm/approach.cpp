@@ -86,6 +86,7 @@ ShipApproach::ShipApproach(const ApproachConfig& cfg, const flight::HelicopterPa
     auto model = std::make_unique<LrmInflow>(c, 0.0);  // the start-up period is part of the run (thesis 9.1)
     lrm_ = model.get();
     inflow = std::move(model);
+    if (cfg_.fuselage) lrm_->domain().add_wall(std::make_shared<Fuselage>());
     if (cfg_.ship_walls) walls_ = std::make_unique<ShipInDomain>(ship_, motion_);
     if (cfg_.wake) feed_ = std::make_unique<WakeFaceFeed>(table_);
   }

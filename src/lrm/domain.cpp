@@ -90,13 +90,17 @@ void LrmDomain::update_walls() {
     const RigidMotion m = walls_[w]->motion();
     moves[w] = !(m.velocity.isZero(0) && m.omega.isZero(0));
   }
+  std::vector<bool> clear(walls_.size());
+  for (size_t w = 0; w < walls_.size(); ++w) clear[w] = walls_[w]->clear_of_faces();
+  const int lo = 2, hi = edge_ - 3;  // the two outermost layers on every side
   std::size_t count = 0;
   for (int k = 0; k < edge_; ++k)
     for (int j = 0; j < edge_; ++j)
       for (int i = 0; i < edge_; ++i) {
         const Vec3 p = position(i, j, k);
+        const bool outer = i < lo || j < lo || k < lo || i > hi || j > hi || k > hi;
         for (size_t w = 0; w < walls_.size(); ++w)
-          if (walls_[w]->signed_distance(p) < 0.0) {
+          if (!(outer && clear[w]) && walls_[w]->signed_distance(p) < 0.0) {
             owner[i + static_cast<std::size_t>(edge_) * (j + static_cast<std::size_t>(edge_) * k)] = static_cast<std::int16_t>(w);
             ++count;
             break;

@@ -23,7 +23,10 @@ void ShipWall::place(double t, const DomainPose& pose) {
 
 ShipInDomain::ShipInDomain(std::shared_ptr<const wake::ShipGeometry> ship, std::shared_ptr<const wake::ShipMotion> motion, bool sea)
     : ship_(std::make_shared<ShipWall>(ship, motion)), waterline_(ship ? ship->datum().waterline : 0.0) {
-  if (sea) sea_ = std::make_shared<GroundPlane>(1.0);
+  if (sea) {
+    sea_ = std::make_shared<GroundPlane>(1.0);
+    sea_->set_clear_of_faces(true);
+  }
 }
 
 bool ShipInDomain::apply(LrmDomain& domain, double t, const DomainPose& pose) {

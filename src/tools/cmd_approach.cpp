@@ -36,7 +36,7 @@ std::function<int()> add_approach_command(CLI::App& app) {
     lrm::ApproachConfig cfg;
     std::string out, config, backend = "auto";
     double output_interval = 0.01;
-    bool overwrite = false, no_plot = false, no_ship = false, no_wake = false;
+    bool overwrite = false, no_plot = false, no_ship = false, no_wake = false, no_fuselage = false;
   };
   auto o = std::make_shared<Opts>();
   o->cfg.lrm.nodes = 32;
@@ -58,6 +58,7 @@ std::function<int()> add_approach_command(CLI::App& app) {
   cmd->add_option("--trim-speed", o->cfg.trim_speed, "m/s airspeed of the fixed controls' trim (default: |wind| + speed)");
   cmd->add_option("--table-offset", o->cfg.table_offset, "s into the table at t = 0")->capture_default_str();
   cmd->add_flag("--no-ship", o->no_ship, "lrm: no ship or sea walls in the LRM domain");
+  cmd->add_flag("--no-fuselage", o->no_fuselage, "lrm: no fuselage walls in the LRM domain");
   cmd->add_flag("--no-wake", o->no_wake, "the table's free stream instead of its wake (thesis appendix VIII)");
   cmd->add_option("--output-interval", o->output_interval, "s between CSV rows")->check(CLI::Range(1e-4, 10.0))->capture_default_str();
   cmd->add_option("--out", o->out, "output directory (approach.csv, approach.png, approach_wavelets.png, approach_summary.csv)")
@@ -71,6 +72,7 @@ std::function<int()> add_approach_command(CLI::App& app) {
     cfg.lrm.backend = lbm::parse_backend(o->backend);
     cfg.ship_walls = !o->no_ship;
     cfg.wake = !o->no_wake;
+    cfg.fuselage = !o->no_fuselage;
     if (cfg.table.empty()) {
       cfg.table = default_wake_table();
       if (!fs::exists(cfg.table))

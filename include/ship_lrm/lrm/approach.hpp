@@ -49,6 +49,7 @@ struct ApproachConfig {
   double trim_speed = 0;        // m/s airspeed of the fixed controls' trim; 0: |free stream| + path speed (thesis: 25.58)
   double table_offset = 0;      // s: approach t = 0 is the table's first frame plus this
   bool ship_walls = true;       // ship and sea as walls of the LRM domain
+  bool fuselage = true;         // the Bo 105-like fuselage (walls.hpp) in the LRM domain (thesis fig. 9.2)
   bool wake = true;             // the table's wake at the faces; false: its free stream only (thesis appendix VIII)
   double lattice_margin = 1.3;  // lattice reference speed >= margin * (|free stream| + path speed), for the gusts
 };

@@ -34,6 +34,7 @@ class ShipWall final : public WallSurface {
   std::string name() const override { return "ship"; }
   double signed_distance(const Vec3& p) const override { return ship_->signed_distance(body_point(p)); }
   RigidMotion motion() const override { return relative_; }
+  bool clear_of_faces() const override { return true; }  // thesis 6.4 (walls.hpp)
   void place(double t, const DomainPose& pose);
   // The ship-frame point at domain position p (m, mr axes from the hub).
   Vec3 body_point(const Vec3& p) const { return to_body_ * p + body_offset_; }

@@ -27,6 +27,11 @@ class WallSurface {
   virtual double signed_distance(const Vec3& p) const = 0;
   // Motion relative to the domain; a body fixed to the rotorcraft (the fuselage) has none.
   virtual RigidMotion motion() const { return {}; }
+  // Keep this body out of the two outermost cell layers (thesis 6.4, fig. 9.3: the gap between the
+  // ship's walls and the LRM's faces is fluid, fed by the faces). A body that moves through the faces
+  // otherwise turns open-boundary cells into walls and back, which disturbs the flow (known defect,
+  // test_ship_walls.cpp) and made the approach diverge where the hull entered the domain.
+  virtual bool clear_of_faces() const { return false; }
 };
 
 // Flat ground (or sea, or a deck larger than the domain): the solid half-space more than `height`
@@ -42,11 +47,14 @@ class GroundPlane final : public WallSurface {
   void set_pose(double height, const Vec3& down);
   void set_motion(const RigidMotion& m) { motion_ = m; }
   double height() const { return height_; }
+  bool clear_of_faces() const override { return clear_of_faces_; }
+  void set_clear_of_faces(bool on) { clear_of_faces_ = on; }
 
  private:
   double height_;
   Vec3 down_;
   RigidMotion motion_;
+  bool clear_of_faces_ = false;
 };
 
 // A Bo 105-like fuselage fixed to the domain: an ellipsoidal cabin below the hub and a tail boom

@@ -1,0 +1,139 @@
+// The ship as a wall of the LRM domain (issue 4 "ship walls", issue 5 "from the same geometry and
+// motion"): its velocity relative to the moving, turning grid must be the rigid-body velocity that
+// finite differences of its points' positions give, and a ship at rest in the air must leave a
+// uniform stream through a translating and rotating domain uniform (no-slip walls moving with the
+// fluid, re-voxelised as they cross the grid, disturb nothing; issue 4 acceptance 3's 0.5 %).
+#include <gtest/gtest.h>
+
+#include "ship_lrm/lrm/ship_walls.hpp"
+
+using namespace ship_lrm;
+using Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+namespace {
+// The domain's pose at time t: hub moving at v, axes turning at omega (mr axes) from R0.
+lrm::DomainPose pose_at(double t, const Vector3d& hub0, const Mat3& R0, const Vector3d& v, const Vector3d& omega) {
+  lrm::DomainPose p;
+  p.hub = hub0 + v * t;
+  const double a = omega.norm() * t;
+  p.rotation = R0 * (a > 0 ? Eigen::AngleAxisd(a, omega.normalized()).toRotationMatrix() : Mat3::Identity());
+  p.hub_velocity = v;
+  p.omega = omega;
+  return p;
+}
+}  // namespace
+
+TEST(ShipWall, VelocityRelativeToTheGridIsTheDerivativeOfItsPointsPositions) {
+  std::shared_ptr<const wake::ShipGeometry> ship = wake::make_natogd(1.0);
+  std::shared_ptr<const wake::ShipMotion> motion = wake::make_motion("approach", 1.0, wake::motion_centre(ship->datum()));
+  lrm::ShipWall wall(ship, motion);
+  const Vector3d hub0(-20, 1, -12), v(5, 0.5, -0.3), omega(0.02, -0.04, 0.06);
+  const Mat3 R0 = (Eigen::AngleAxisd(0.2, Vector3d::UnitZ()) * Eigen::AngleAxisd(0.05, Vector3d::UnitY())).toRotationMatrix();
+  const double t = 3.7, h = 1e-4;
+  for (const Vector3d r : {Vector3d(3, -2, 4), Vector3d(-6, 5, 1), Vector3d(0, 0, 0)}) {
+    wall.place(t, pose_at(t, hub0, R0, v, omega));
+    const Vector3d body = wall.body_point(r);
+    // the composition is the mean-frame placement of the ship
+    const lrm::DomainPose p = pose_at(t, hub0, R0, v, omega);
+    EXPECT_LT((body - motion->placement(t).to_body(p.to_mean(r))).norm(), 1e-12);
+    EXPECT_DOUBLE_EQ(wall.signed_distance(r), ship->signed_distance(body));
+    // where that body point is in the grid at t +- h
+    auto grid_position = [&](double s) {
+      const lrm::DomainPose q = pose_at(s, hub0, R0, v, omega);
+      return Vector3d(q.rotation.transpose() * (motion->position(body, s) - q.hub));
+    };
+    const Vector3d fd = (grid_position(t + h) - grid_position(t - h)) / (2 * h);
+    const lrm::RigidMotion m = wall.motion();
+    const Vector3d u = m.velocity + m.omega.cross(r);
+    EXPECT_LT((u - fd).norm(), 1e-6 * (1 + fd.norm())) << "r = " << r.transpose() << ": " << u.transpose() << " vs " << fd.transpose();
+  }
+}
+
+namespace {
+// Largest deviation (m/s) from the still air seen from the grid, over every fluid cell, after `steps`
+// LBM steps of a domain whose hub starts `height` m above the landing spot and moves at v, turning at
+// omega, past a NatoGD at rest in still air.
+double disturbance(double height, const Vector3d& v, const Vector3d& omega, int steps, std::size_t* voxelisations) {
+  lrm::LrmConfig cfg;
+  cfg.nodes = 16;
+  cfg.reach = 1.25;
+  cfg.backend = lbm::Backend::Cpu;
+  lrm::LrmDomain domain(cfg);
+  std::shared_ptr<const wake::ShipGeometry> ship = wake::make_natogd(1.0);
+  std::shared_ptr<const wake::ShipMotion> still = std::make_shared<wake::StaticMotion>();
+  lrm::ShipInDomain walls(ship, still);
+  // hub 9.5 m above the deck over the landing spot: deck, hangar face and stern in the domain
+  const Vector3d hub0(-12.75, 0, -height);
+  const Mat3 R0 = Mat3::Identity();
+  const double dt = domain.time_step();
+  auto motion_at = [&](double t) {
+    const lrm::DomainPose p = pose_at(t, hub0, R0, v, omega);
+    lrm::LrmDomain::Motion m;
+    m.air_velocity = -(p.rotation.transpose() * v);  // still air, seen from the hub
+    m.omega = omega;
+    // the hub's inertial acceleration in mr axes: d/dt (R^T v) + omega x (R^T v) = 0 for constant v
+    return std::make_pair(p, m);
+  };
+  auto [p0, m0] = motion_at(0);
+  domain.set_motion(m0);
+  domain.restart_flow();
+  walls.apply(domain, 0.0, p0);
+  EXPECT_GT(domain.wall_cells(), 0u);
+  for (int s = 1; s <= steps; ++s) {
+    domain.step(1);
+    auto [p, m] = motion_at(s * dt);
+    domain.set_motion(m);
+    walls.apply(domain, s * dt, p);
+  }
+  *voxelisations = walls.voxelisations();
+  // every fluid cell: the still air seen from the grid, -(R^T v) - omega x r
+  const auto [p, m] = motion_at(steps * dt);
+  const auto f = domain.solver().fields();
+  const auto& lat = domain.solver().lattice();
+  const double to_phys = domain.units().dx() / domain.units().dt();
+  const int n = domain.cells_per_edge();
+  double worst = 0;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const std::size_t c = lat.index(i, j, k);
+        if (lbm::is_wall(static_cast<lbm::CellType>(lat.types()[c] & ~lbm::kGeneralBit))) continue;
+        const Vector3d expect = m.air_velocity - omega.cross(domain.position(i, j, k));
+        const Vector3d u(f.u[3 * c] * to_phys, f.u[3 * c + 1] * to_phys, f.u[3 * c + 2] * to_phys);
+        worst = std::max(worst, (u - expect).norm());
+      }
+  return worst;
+}
+}  // namespace
+
+// The hull inside the domain from side to side and below, the sea closing the bottom face; the stern
+// enters through the back face (impedance outlet) as the domain flies aft: 400 steps, 11 m of travel.
+TEST(ShipInDomain, ShipAtRestInTheAirLeavesAUniformStreamUniformAsItCrossesTheGrid) {
+  std::size_t vox = 0;
+  const Vector3d v(-4.0, 0.0, 0.3);
+  const double worst = disturbance(3.5, v, Vector3d::Zero(), 400, &vox);
+  EXPECT_GT(vox, 10u);
+  EXPECT_LT(worst, 0.005 * v.norm()) << "largest deviation " << worst << " m/s";
+}
+
+// The approach's geometry (thesis 9.1): hub 9.5 m above the deck, the hull reaching through the
+// bottom, back and side faces, kept out of their two outermost layers (thesis 6.4); the domain moves
+// aft and sideways and turns.
+TEST(ShipInDomain, UniformStreamStaysUniformWhileTheHullCrossesTheFacesAndTheDomainTurns) {
+  std::size_t vox = 0;
+  const Vector3d v(-4.0, 1.0, 0.0), omega(0, 0, 0.03);
+  const double worst = disturbance(9.5, v, omega, 400, &vox);
+  EXPECT_GT(vox, 10u);
+  EXPECT_LT(worst, 0.005 * v.norm()) << "largest deviation " << worst << " m/s";
+}
+
+// KNOWN DEFECT (docs/benchmarks.md, "Approach"): with the hub 3.5 m above the deck the hull fills the
+// domain's lower half, and the fluid in the gap between hull and faces (dead ends under the hull) is
+// disturbed while the domain moves sideways and turns: 0.062 m/s, 1.5 % of 4.1 m/s. Enabled once fixed.
+TEST(ShipInDomain, DISABLED_UniformStreamStaysUniformWithTheHullFillingTheLowerHalf) {
+  std::size_t vox = 0;
+  const Vector3d v(-4.0, 1.0, 0.0), omega(0, 0, 0.03);
+  const double worst = disturbance(3.5, v, omega, 400, &vox);
+  EXPECT_LT(worst, 0.005 * v.norm()) << "largest deviation " << worst << " m/s";
+}

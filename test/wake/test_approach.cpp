@@ -1,0 +1,136 @@
+// The ship approach of thesis 9.1 (lrm/approach.hpp): the path's numbers, the whole chain (wind, path
+// velocity, attitude) reproducing the trim it was given, determinism, the ship entering the LRM
+// domain, and clear errors for tables that cannot serve an approach.
+#include <gtest/gtest.h>
+
+#include "ship_lrm/flight/parameters.hpp"
+#include "ship_lrm/lrm/approach.hpp"
+#include "ship_lrm/wake/wake_precompute.hpp"
+#include "temp_path.hpp"
+
+using namespace ship_lrm;
+
+namespace {
+// The tiny preset (full-scale NatoGD at rest, 20.58 m/s, 2 s of frames), made once per test run.
+const std::string& tiny_table() {
+  static const std::string path = [] {
+    wake::PrecomputeOptions o = wake::preset("tiny");
+    o.out = test::temp_path("ship_lrm_test_approach", "tiny.h5");
+    o.domain.backend = lbm::Backend::Cpu;
+    wake::precompute_wake(o);
+    return o.out;
+  }();
+  return path;
+}
+
+lrm::ApproachConfig config(const std::string& inflow, double duration) {
+  lrm::ApproachConfig c;
+  c.table = tiny_table();
+  c.inflow = inflow;
+  c.duration = duration;
+  c.startup = 0.0;
+  c.lrm.nodes = 16;
+  c.lrm.backend = lbm::Backend::Cpu;
+  return c;
+}
+}  // namespace
+
+TEST(ApproachPath, ThesisNumbers) {
+  const lrm::ApproachPath p;  // thesis 9.1: 97 m behind the spot, 5 m/s for 17 s, hover from 18 s
+  EXPECT_DOUBLE_EQ(p.distance_at(0), 97.0);
+  EXPECT_DOUBLE_EQ(p.distance_at(17), 12.0);
+  EXPECT_DOUBLE_EQ(p.speed_at(17.5), 2.5);
+  EXPECT_DOUBLE_EQ(p.distance_at(17.5), 12.0 - (5 * 0.5 - 0.5 * 5 * 0.25));  // integral of the linear deceleration
+  EXPECT_DOUBLE_EQ(p.distance_at(18), 9.5);
+  EXPECT_DOUBLE_EQ(p.distance_at(30), 9.5);
+  EXPECT_DOUBLE_EQ(p.speed_at(30), 0.0);
+  lrm::ApproachPath bad;
+  bad.hover_at = 10;  // before the deceleration starts
+  EXPECT_THROW(bad.validate(), lbm::ConfigError);
+}
+
+// Pitt-Peters in the free stream: the helicopter held at the trim attitude, moving at 5 m/s into a
+// 20.58 m/s wind with the trim's controls, must give the trim's thrust and power (the trim at 25.58 m/s
+// airspeed in still air): wind, path velocity and attitude enter as the trim assumed them.
+TEST(ShipApproach, FreeStreamWithPittPetersReproducesTheTrim) {
+  lrm::ApproachConfig c = config("pitt_peters", 1.0);
+  c.wake = false;
+  lrm::ShipApproach run(c, flight::load_default_bo105());
+  EXPECT_NEAR(run.trim().controls.collective, run.helicopter().controls().collective, 1e-12);
+  const double revolution = 2 * M_PI / run.helicopter().parameters().main_rotor.rotor_speed;
+  double thrust = 0, power = 0;
+  int n = 0;
+  while (!run.done()) {
+    run.step();
+    if (run.time() > c.duration - revolution) {  // the last revolution's average, as the trim's
+      thrust += run.sample().thrust;
+      power += run.sample().main_power;
+      ++n;
+    }
+  }
+  ASSERT_GT(n, 10);
+  EXPECT_NEAR(thrust / n, run.trim().thrust, 0.01 * run.trim().thrust);
+  EXPECT_NEAR(power / n, run.trim().main_power, 0.02 * run.trim().main_power);
+}
+
+// The LRM path: two runs give identical loads (simulated time is deterministic); 10 m behind the spot
+// and 5 m above it the deck is inside the domain, so the ship adds wall cells.
+TEST(ShipApproach, LrmRunIsDeterministicAndTheShipEntersTheDomain) {
+  lrm::ApproachConfig c = config("lrm", 0.3);
+  c.path.start_distance = 10.0;
+  c.path.height = 5.0;
+  auto run = [&](bool ship) {
+    lrm::ApproachConfig k = c;
+    k.ship_walls = ship;
+    lrm::ShipApproach a(k, flight::load_default_bo105());
+    std::vector<double> ct;
+    std::size_t walls = 0;
+    while (!a.done()) {
+      a.step();
+      ct.push_back(a.sample().ct);
+      walls = a.sample().wall_cells;
+      EXPECT_TRUE(std::isfinite(a.sample().ct));
+    }
+    return std::make_pair(ct, walls);
+  };
+  const auto first = run(true), second = run(true), no_ship = run(false);
+  EXPECT_EQ(first.first, second.first);
+  EXPECT_GT(first.second, no_ship.second + 100);
+}
+
+TEST(ShipApproach, TablesThatCannotServeAnApproachAreRefusedByName) {
+  lrm::ApproachConfig c = config("pitt_peters", 5.0);  // the tiny table holds 2 s
+  try {
+    lrm::ShipApproach a(c, flight::load_default_bo105());
+    FAIL() << "a 5 s approach on a 2 s table was accepted";
+  } catch (const lbm::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("covers"), std::string::npos) << e.what();
+  }
+  // a table of no known ship, and one of a model-scale ship
+  for (const std::string scale : {"full", "model"}) {
+    const std::string path = test::temp_path("ship_lrm_test_approach", "noship_" + scale + ".h5");
+    wake::WakeTableInfo info;
+    info.origin = {-60, -30, -30};
+    info.spacing = 4.0;
+    info.shape = {4, 4, 4};
+    info.frame_interval = 1.0;
+    info.free_stream = {-20, 0, 0};
+    info.ship = "none";
+    info.scale = scale;
+    info.motion = "static";
+    {
+      wake::WakeTableWriter w(path, info);
+      std::vector<float> u(3 * info.points(), 0.0f), rho(info.points(), 1.2f);
+      w.append(u, rho);
+      w.append(u, rho);
+    }
+    lrm::ApproachConfig k = config("pitt_peters", 0.5);
+    k.table = path;
+    try {
+      lrm::ShipApproach a(k, flight::load_default_bo105());
+      FAIL() << "a table of ship 'none' (" << scale << ") was accepted";
+    } catch (const lbm::ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find(scale == "full" ? "cannot rebuild the ship" : "full-scale"), std::string::npos) << e.what();
+    }
+  }
+}
