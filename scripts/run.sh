@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# The main job. Sets up and builds if needed, then runs the default scenario.
-# Until the ROS layer and the approach scenario land (issue 6), the default job runs what exists: the
-# Bo 105 flight model's trim sweep (build/run/trim.csv, trim.png) and a lateral doublet
-# (build/run/doublet_lateral.*), the LBM core's validation flow (the Schaefer & Turek 3D-1Z cylinder:
-# drag against the published reference; flow field in build/run/cylinder.vti for ParaView), and the
-# approach scenario's default ship-wake table (made once, about 2 minutes on 2 cores, then cached in
-# ~/.cache/ship_lrm; its centre-plane plot beside it).
+# The main job. Sets up and builds if needed, then runs the default scenario: the approach of thesis
+# 9.1 (a Bo 105 onto the moving NatoGD-like destroyer, LRM inflow at N = 32 fed by the default ship-wake
+# table, ROS-free batch path, simulated time) into build/run/approach/ (approach.csv, approach.png,
+# approach_wavelets.png, approach_summary.csv). The default wake table is made on first use (about
+# 2 minutes on 2 cores) and cached in ~/.cache/ship_lrm. Then, as before: the Bo 105 trim sweep and a
+# lateral doublet (build/run/trim.*, doublet_lateral.*) and the LBM core's validation flow (Schaefer &
+# Turek 3D-1Z cylinder drag; build/run/cylinder.vti). The ROS launch files follow with issue 6.
 # With arguments, runs `ship_lrm <arguments>` instead.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -18,7 +18,8 @@ if [ $# -gt 0 ]; then
 fi
 out="$root/build/run"
 mkdir -p "$out"
+ship_lrm wake --preset default
+ship_lrm approach --N 32 --out "$out/approach" --overwrite
 ship_lrm trim --speeds 0:5:70 --out "$out" --overwrite
 ship_lrm doublet --axis lateral --speed 13.37 --out "$out" --overwrite
 ship_lrm validate cylinder --resolution 10 --vti "$out/cylinder.vti"
-ship_lrm wake --preset default
