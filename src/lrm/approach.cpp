@@ -29,7 +29,8 @@ double ApproachPath::distance_at(double t) const {
 
 void ApproachPath::validate() const {
   if (!std::isfinite(start_distance)) throw lbm::ConfigError("approach: the start distance must be finite");
-  if (!(height > 0) || !std::isfinite(height)) throw lbm::ConfigError("approach: the height above the deck must be > 0 m, got " + num(height));
+  if (!(height > 0) || !std::isfinite(height))
+    throw lbm::ConfigError("approach: the height above the deck must be > 0 m, got " + num(height));
   if (!(speed >= 0) || !std::isfinite(speed)) throw lbm::ConfigError("approach: the speed must be >= 0 m/s, got " + num(speed));
   if (!std::isfinite(lateral)) throw lbm::ConfigError("approach: the lateral offset must be finite");
   if (!(decelerate_at >= 0) || !(hover_at >= decelerate_at) || !std::isfinite(hover_at))

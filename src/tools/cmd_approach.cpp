@@ -76,10 +76,13 @@ std::function<int()> add_approach_command(CLI::App& app) {
     if (cfg.table.empty()) {
       cfg.table = default_wake_table();
       if (!fs::exists(cfg.table))
-        throw lbm::ConfigError("the default wake table " + cfg.table + " does not exist yet; make it with `ship_lrm wake --preset default`");
+        throw lbm::ConfigError("the default wake table " + cfg.table +
+                               " does not exist yet; make it with `ship_lrm wake --preset default`");
     } else if (!fs::exists(cfg.table)) {
-      throw lbm::ConfigError("wake table '" + cfg.table + "' not found; make one with `ship_lrm wake --ship natogd --scale full ...` "
-                             "or `ship_lrm wake --preset default --out " + cfg.table + "`");
+      throw lbm::ConfigError("wake table '" + cfg.table +
+                             "' not found; make one with `ship_lrm wake --ship natogd --scale full ...` "
+                             "or `ship_lrm wake --preset default --out " +
+                             cfg.table + "`");
     }
     const fs::path dir(o->out);
     prepare_output(dir, {"approach.csv", "approach.png", "approach_wavelets.png", "approach_summary.csv"}, o->overwrite);
@@ -101,15 +104,16 @@ std::function<int()> add_approach_command(CLI::App& app) {
     while (!run.done()) {
       run.step();
       const lrm::ApproachSample& s = run.sample();
-      if (!std::isfinite(s.thrust)) throw std::runtime_error("approach: the rotor loads are not finite at t = " + std::to_string(s.time) + " s");
+      if (!std::isfinite(s.thrust))
+        throw std::runtime_error("approach: the rotor loads are not finite at t = " + std::to_string(s.time) + " s");
       if (s.time >= next_row - 0.5 * run.time_step()) {
         write_row(csv, s);
         next_row += o->output_interval;
       }
       if (s.time >= next_report - 0.5 * run.time_step()) {
         std::cout << std::fixed << std::setprecision(1) << "  t = " << s.time << " s, " << s.distance << " m behind the spot, "
-                  << s.height_above_deck << " m above the deck, C_T " << std::setprecision(5) << s.ct << ", LRM wall cells "
-                  << s.wall_cells << ", t_clock/t_sim " << std::setprecision(2) << run.wall_seconds() / s.time << "\n"
+                  << s.height_above_deck << " m above the deck, C_T " << std::setprecision(5) << s.ct << ", LRM wall cells " << s.wall_cells
+                  << ", t_clock/t_sim " << std::setprecision(2) << run.wall_seconds() / s.time << "\n"
                   << std::defaultfloat << std::flush;
         next_report += 2.0;
       }

@@ -57,15 +57,15 @@ struct ApproachConfig {
 // What one coupling step leaves (rotor loads aerodynamic only, mr axes; coefficients as in thesis 9.2
 // with the nominal rotor speed: C_T = T / (rho pi R^2 (Omega R)^2), C_M = M / (rho pi R^2 (Omega R)^2 R)).
 struct ApproachSample {
-  double time = 0;                               // s
-  Vec3 cg = Vec3::Zero();                        // m, mean frame
-  double distance = 0;                           // m behind the landing spot
-  double height_above_deck = 0;                  // m, cg above the (moving) deck plane
-  double speed = 0;                              // m/s relative to the ship
-  double thrust = 0, ct = 0, cmx = 0, cmy = 0;   // N, -, -, -
-  double main_power = 0;                         // W
-  Vec3 inflow_mean = Vec3::Zero();               // m/s, mr axes, relative to the rotor frame
-  double ship_heave = 0, ship_pitch = 0;         // m (up), rad (bow up)
+  double time = 0;                                // s
+  Vec3 cg = Vec3::Zero();                         // m, mean frame
+  double distance = 0;                            // m behind the landing spot
+  double height_above_deck = 0;                   // m, cg above the (moving) deck plane
+  double speed = 0;                               // m/s relative to the ship
+  double thrust = 0, ct = 0, cmx = 0, cmy = 0;    // N, -, -, -
+  double main_power = 0;                          // W
+  Vec3 inflow_mean = Vec3::Zero();                // m/s, mr axes, relative to the rotor frame
+  double ship_heave = 0, ship_pitch = 0;          // m (up), rad (bow up)
   std::size_t wall_cells = 0, voxelisations = 0;  // LRM
   std::size_t face_refreshes = 0;
 };
