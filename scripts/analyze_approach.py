@@ -10,8 +10,9 @@ Input: the CSV of `ship_lrm approach` (columns time_s, CT, CMx, CMy, distance_to
 height_above_deck_m). Output in DIR: approach.png, approach_wavelets.png, approach_summary.csv.
 
 The wavelet amplitude is calibrated so that a sinusoid of amplitude A shows A at its frequency (the
-transform of a unit sinusoid is computed at every scale and divided out). The series is mirrored at
-both ends before the transform, the smooth continuation the thesis assumes.
+response to a unit sinusoid at one reference frequency, carried to every scale by the transform's
+sqrt(scale) normalisation). The series is mirrored at both ends before the transform, the smooth
+continuation the thesis assumes. Below two cycles per record (hatched) the amplitudes are not reliable.
 """
 import argparse
 import csv
@@ -56,16 +57,19 @@ def wavelet_amplitude(y, dt, freqs):
     pad = min(n - 1, int(np.ceil(3.0 / (freqs.min() * dt))))  # mirror: the smooth continuation
     def cwt(x):
         xp = np.concatenate([x[pad:0:-1], x, x[-2:-pad - 2:-1]]) if pad > 0 else x
-        c, _ = pywt.cwt(xp, scales, WAVELET, sampling_period=dt)
+        c, _ = pywt.cwt(xp, scales, WAVELET, sampling_period=dt, method="fft")
         return np.abs(c[:, pad:pad + n])
     amp = cwt(y - np.mean(y))
-    # calibration: the response to a unit sinusoid at each frequency, in the middle of the series
+    # calibration: the response to a unit sinusoid at a reference frequency the series holds many
+    # periods of (the middle half of the record, away from its ends), carried to the other scales by the
+    # transform's sqrt(scale) normalisation: dividing by each scale's own response on a short record
+    # would blow up the frequencies the record cannot hold.
     t = np.arange(n) * dt
-    gain = np.empty(len(freqs))
-    for k, f in enumerate(freqs):
-        c, _ = pywt.cwt(np.sin(2 * np.pi * f * t), scales[k:k + 1], WAVELET, sampling_period=dt)
-        gain[k] = np.median(np.abs(c[0, n // 4:3 * n // 4])) if n >= 8 else 1.0
-    gain[~(gain > 1e-12)] = np.nan  # a scale the series is too short for: no amplitude
+    f_ref = min(max(freqs.max() / 4, 20.0 / (n * dt)), freqs.max())
+    s_ref = fc / (f_ref * dt)
+    c, _ = pywt.cwt(np.sin(2 * np.pi * f_ref * t), [s_ref], WAVELET, sampling_period=dt, method="fft")
+    g_ref = np.median(np.abs(c[0, n // 4:3 * n // 4]))
+    gain = g_ref * np.sqrt(scales / s_ref)
     return amp / gain[:, None]
 
 
@@ -126,6 +130,8 @@ def main():
             ax[i].set_yscale("log")
             for f in BAND:
                 ax[i].axhline(f, color="r", ls="--", lw=1)
+            short = 2.0 / (tu[-1] - tu[0])  # fewer than two cycles in the record below this
+            ax[i].axhspan(freqs[0], short, facecolor="none", edgecolor="w", hatch="//", lw=0)
             ax[i].set_ylabel(f"{label}\nfrequency (Hz)")
             fig.colorbar(m, ax=ax[i], label="amplitude")
             inband = (freqs >= BAND[0]) & (freqs <= BAND[1])
@@ -144,7 +150,7 @@ def main():
     with open(os.path.join(a.out, "approach_summary.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["coefficient", "value_at_startup", "phase", "t_from_s", "t_to_s", "delta_mean", "delta_std", "delta_min", "delta_max",
-                    "wavelet_mean_amplitude_0.02_2Hz", "wavelet_mean_amplitude_0.2_2Hz"])
+                    "wavelet_mean_amplitude_after_startup_0.02_2Hz", "wavelet_mean_amplitude_after_startup_0.2_2Hz"])
         for c, _ in COEFFS:
             wav = next(((b, u) for n, b, u in summary if n == c), (float("nan"), float("nan")))
             for name, lo, hi in phases:
