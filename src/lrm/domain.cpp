@@ -87,8 +87,7 @@ void LrmDomain::update_walls() {
   std::vector<std::int16_t> owner(owner_.size(), -1);
   std::vector<bool> moves(walls_.size());
   for (size_t w = 0; w < walls_.size(); ++w) {
-    const RigidMotion m = walls_[w]->motion();
-    moves[w] = !(m.velocity.isZero(0) && m.omega.isZero(0));
+    moves[w] = walls_[w]->motion().moving();
   }
   std::vector<bool> clear(walls_.size());
   for (size_t w = 0; w < walls_.size(); ++w) clear[w] = walls_[w]->clear_of_faces();
@@ -127,10 +126,8 @@ void LrmDomain::push_wall_motions() {
 }
 
 void LrmDomain::update_wall_motions() {
-  for (size_t w = 0; w < walls_.size(); ++w) {
-    const RigidMotion m = walls_[w]->motion();
-    if (wall_moves_[w] == (m.velocity.isZero(0) && m.omega.isZero(0))) return update_walls();
-  }
+  for (size_t w = 0; w < walls_.size(); ++w)
+    if (wall_moves_[w] != walls_[w]->motion().moving()) return update_walls();
   push_wall_motions();
 }
 

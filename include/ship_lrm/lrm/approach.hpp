@@ -84,7 +84,6 @@ class ShipApproach {
   const flight::TrimResult& trim() const { return trim_; }
   const ApproachConfig& config() const { return cfg_; }
   const wake::WakeTableInfo& table_info() const { return table_->info(); }
-  const wake::ShipGeometry& ship() const { return *ship_; }
   flight::Helicopter& helicopter() { return *heli_; }
   LrmDomain* lrm_domain() { return lrm_ ? &lrm_->domain() : nullptr; }
   // The domain's pose at approach time t (also the ROS layer's tf).

@@ -38,8 +38,6 @@ class ShipWall final : public WallSurface {
   void place(double t, const DomainPose& pose);
   // The ship-frame point at domain position p (m, mr axes from the hub).
   Vec3 body_point(const Vec3& p) const { return to_body_ * p + body_offset_; }
-  const wake::ShipGeometry& geometry() const { return *ship_; }
-  const wake::ShipMotion& ship_motion() const { return *motion_; }
 
  private:
   std::shared_ptr<const wake::ShipGeometry> ship_;
@@ -60,7 +58,6 @@ class ShipInDomain {
   // Returns whether it re-voxelised. Throws lbm::ConfigError when the ship covers a rotor-disk cell.
   bool apply(LrmDomain& domain, double t, const DomainPose& pose);
   std::size_t voxelisations() const { return voxelisations_; }
-  const ShipWall& ship() const { return *ship_; }
 
  private:
   std::shared_ptr<ShipWall> ship_;

@@ -17,6 +17,7 @@ using rotor::Vec3;
 struct RigidMotion {
   Vec3 velocity = Vec3::Zero();
   Vec3 omega = Vec3::Zero();
+  bool moving() const { return !(velocity.isZero(0) && omega.isZero(0)); }
 };
 
 class WallSurface {
