@@ -21,7 +21,7 @@ void write_header(std::ostream& o) {
        "inflow_y_m_s,inflow_z_m_s,ship_heave_m,ship_pitch_deg,lrm_wall_cells,lrm_voxelisations,face_refreshes\n";
 }
 void write_row(std::ostream& o, const lrm::ApproachSample& s) {
-  o << std::setprecision(9) << s.time << ',' << s.cg.x() << ',' << s.cg.y() << ',' << s.cg.z() << ',' << s.distance << ','
+  o << std::setprecision(17) << s.time << ',' << s.cg.x() << ',' << s.cg.y() << ',' << s.cg.z() << ',' << s.distance << ','
     << s.height_above_deck << ',' << s.speed << ',' << s.thrust << ',' << s.ct << ',' << s.cmx << ',' << s.cmy << ','
     << s.main_power / 1000.0 << ',' << s.inflow_mean.x() << ',' << s.inflow_mean.y() << ',' << s.inflow_mean.z() << ',' << s.ship_heave
     << ',' << s.ship_pitch * 180.0 / M_PI << ',' << s.wall_cells << ',' << s.voxelisations << ',' << s.face_refreshes << '\n';

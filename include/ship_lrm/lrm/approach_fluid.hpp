@@ -1,0 +1,54 @@
+// The fluid side of the ship approach (thesis 9.1; ARCHITECTURE.md: what the LrmSolver nodelet runs):
+// the LRM domain fixed to the rotor, fed at its faces by the wake table, holding the fuselage, the
+// moving ship and the sea as walls. It answers the flight side's InflowRequests (inflow_link.hpp):
+// before it takes a request's loads it places walls and faces for the request's table time and
+// domain pose, once per time; the one-process path places them eagerly at the same times, so the
+// domain sees the same operations in the same order either way.
+#pragma once
+#include <memory>
+
+#include "ship_lrm/lrm/approach_config.hpp"
+#include "ship_lrm/lrm/inflow_link.hpp"
+#include "ship_lrm/lrm/lrm_inflow.hpp"
+#include "ship_lrm/lrm/ship_walls.hpp"
+#include "ship_lrm/lrm/wake_feed.hpp"
+
+namespace ship_lrm::lrm {
+
+class ApproachFluid {
+ public:
+  // table: the approach's table when the caller holds it open already; else it is opened here.
+  ApproachFluid(const ApproachConfig& cfg, const flight::HelicopterParameters& params, std::shared_ptr<wake::WakeTable> table = nullptr);
+  // Walls and faces for table time t and the domain's pose (no-op when already placed for t).
+  void place(double table_time, const DomainPose& pose);
+  // Places for the request, then resets or advances the LRM with its loads; the inflow over the disk.
+  rotor::RotorInflow serve(const InflowRequest& request);
+
+  LrmDomain& domain() { return lrm_.domain(); }
+  const LrmInflow& lrm() const { return lrm_; }
+  const DomainPose& pose() const { return pose_; }  // of the last placement
+  std::size_t voxelisations() const { return walls_ ? walls_->voxelisations() : 0; }
+  std::size_t face_refreshes() const { return face_refreshes_; }
+
+ private:
+  std::shared_ptr<wake::WakeTable> table_;
+  LrmInflow lrm_;
+  std::unique_ptr<ShipInDomain> walls_;
+  std::unique_ptr<WakeFaceFeed> feed_;
+  bool placed_ = false;
+  double placed_time_ = 0;
+  DomainPose pose_;
+  std::size_t face_refreshes_ = 0;
+};
+
+// A link that calls a fluid side in the same process (the batch path).
+class DirectLink final : public InflowLink {
+ public:
+  explicit DirectLink(std::shared_ptr<ApproachFluid> fluid) : fluid_(std::move(fluid)) {}
+  rotor::RotorInflow exchange(const InflowRequest& request) override { return fluid_->serve(request); }
+
+ private:
+  std::shared_ptr<ApproachFluid> fluid_;
+};
+
+}  // namespace ship_lrm::lrm
