@@ -28,11 +28,7 @@ void progress_bar(const wake::PrecomputeOptions::Progress& p) {
 
 }  // namespace
 
-std::string default_wake_table() {
-  if (const char* p = std::getenv("SHIP_LRM_WAKE_CACHE")) return std::string(p) + "/wake_default_v1.h5";
-  const char* home = std::getenv("HOME");
-  return std::string(home ? home : ".") + "/.cache/ship_lrm/wake_default_v1.h5";
-}
+std::string default_wake_table() { return wake::default_table_path(); }
 
 std::function<int()> add_wake_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("wake", "Precompute a ship air wake into a wake table (HDF5 + XDMF), with centre-plane statistics");

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -180,6 +181,12 @@ std::vector<float> CentrePlaneStats::tke(int phase) const {
     k[p] = static_cast<float>(0.5 * e);
   }
   return k;
+}
+
+std::string default_table_path() {
+  if (const char* p = std::getenv("SHIP_LRM_WAKE_CACHE")) return std::string(p) + "/wake_default_v1.h5";
+  const char* home = std::getenv("HOME");
+  return std::string(home ? home : ".") + "/.cache/ship_lrm/wake_default_v1.h5";
 }
 
 PrecomputeOptions preset(const std::string& name) {

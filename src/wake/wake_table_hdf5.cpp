@@ -5,10 +5,22 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 
 #include "ship_lrm/wake/wake_table.hpp"
 
 namespace ship_lrm::wake {
+namespace {
+// Debian's HDF5 is the serial build, which is not thread-safe: every HDF5 call in this file runs
+// under this one process-wide lock (the ROS nodelets share a process and open tables from several
+// threads). Recursive: public functions that hold it call each other.
+std::recursive_mutex& hdf5_mutex() {
+  static std::recursive_mutex m;
+  return m;
+}
+using Hdf5Lock = std::lock_guard<std::recursive_mutex>;
+}  // namespace
+
 namespace {
 
 // Closes an HDF5 handle when it goes out of scope.
@@ -119,59 +131,66 @@ struct WakeTableWriter::Impl {
 
 WakeTableWriter::WakeTableWriter(const std::string& path, const WakeTableInfo& info, bool resume, int keep_frames)
     : impl_(std::make_unique<Impl>()), info_(info), path_(path) {
-  quiet();
-  if (info.shape[0] < 2 || info.shape[1] < 2 || info.shape[2] < 2)
-    throw TableError("wake table: the grid needs at least 2 points per axis");
-  if (!(info.spacing > 0) || !(info.frame_interval > 0)) throw TableError("wake table: spacing and frame interval must be > 0");
-  const hsize_t nx = info.shape[0], ny = info.shape[1], nz = info.shape[2];
-  if (resume) {
-    impl_->file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
-    if (impl_->file < 0) throw TableError("wake table '" + path + "': cannot reopen it to resume");
-    impl_->vel = Handle(H5Dopen2(impl_->file, "/velocity", H5P_DEFAULT), H5Dclose);
-    impl_->rho = Handle(H5Dopen2(impl_->file, "/density", H5P_DEFAULT), H5Dclose);
-    if (impl_->vel < 0 || impl_->rho < 0) throw TableError("wake table '" + path + "': datasets missing, cannot resume");
-    const hsize_t dv[5] = {static_cast<hsize_t>(keep_frames), nz, ny, nx, 3}, dr[4] = {static_cast<hsize_t>(keep_frames), nz, ny, nx};
-    ok(H5Dset_extent(impl_->vel, dv), "resizing /velocity");
-    ok(H5Dset_extent(impl_->rho, dr), "resizing /density");
-    info_.frames = keep_frames;
-  } else {
-    std::error_code ec;
-    if (std::filesystem::path(path).has_parent_path()) std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
-    impl_->file = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-    if (impl_->file < 0) throw TableError("wake table: cannot create '" + path + "'");
-    Handle disk_type = info.half_precision ? half_type() : Handle(H5Tcopy(H5T_IEEE_F32LE), H5Tclose);
-    const hsize_t dv[5] = {0, nz, ny, nx, 3}, mv[5] = {H5S_UNLIMITED, nz, ny, nx, 3}, cv[5] = {1, nz, ny, nx, 3};
-    const hsize_t dr[4] = {0, nz, ny, nx}, mr[4] = {H5S_UNLIMITED, nz, ny, nx}, cr[4] = {1, nz, ny, nx};
-    Handle sv(H5Screate_simple(5, dv, mv), H5Sclose), sr(H5Screate_simple(4, dr, mr), H5Sclose);
-    Handle pv(H5Pcreate(H5P_DATASET_CREATE), H5Pclose), pr(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
-    ok(H5Pset_chunk(pv, 5, cv), "chunking");  // one chunk per frame
-    ok(H5Pset_chunk(pr, 4, cr), "chunking");
-    impl_->vel = Handle(H5Dcreate2(impl_->file, "/velocity", disk_type, sv, H5P_DEFAULT, pv, H5P_DEFAULT), H5Dclose);
-    impl_->rho = Handle(H5Dcreate2(impl_->file, "/density", disk_type, sr, H5P_DEFAULT, pr, H5P_DEFAULT), H5Dclose);
-    if (impl_->vel < 0 || impl_->rho < 0) throw TableError("wake table: cannot create the datasets in '" + path + "'");
-    const hid_t f = impl_->file;
-    write_attr(f, "format_version", std::vector<double>{static_cast<double>(kWakeTableFormatVersion)});
-    write_attr(f, "generator", std::string("ship_lrm wake"));
-    write_attr(f, "origin", std::vector<double>(info.origin.begin(), info.origin.end()));
-    write_attr(f, "spacing", std::vector<double>{info.spacing});
-    write_attr(f, "shape", std::vector<double>{double(nx), double(ny), double(nz)});
-    write_attr(f, "frame_interval", std::vector<double>{info.frame_interval});
-    write_attr(f, "start_time", std::vector<double>{info.start_time});
-    write_attr(f, "free_stream", std::vector<double>(info.free_stream.begin(), info.free_stream.end()));
-    write_attr(f, "free_density", std::vector<double>{info.free_density});
-    write_attr(f, "ship", info.ship);
-    write_attr(f, "scale", info.scale);
-    write_attr(f, "motion", info.motion);
-    write_attr(f, "units", std::string(kWakeTableUnits));
-    write_attr(f, "frame", std::string("mean ship frame: x forward, y starboard, z down; origin at the hangar-door base"));
-    write_attr(f, "frames", std::vector<double>{0.0});
-    info_.frames = 0;
+  const Hdf5Lock hdf5_lock(hdf5_mutex());
+  try {
+    quiet();
+    if (info.shape[0] < 2 || info.shape[1] < 2 || info.shape[2] < 2)
+      throw TableError("wake table: the grid needs at least 2 points per axis");
+    if (!(info.spacing > 0) || !(info.frame_interval > 0)) throw TableError("wake table: spacing and frame interval must be > 0");
+    const hsize_t nx = info.shape[0], ny = info.shape[1], nz = info.shape[2];
+    if (resume) {
+      impl_->file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
+      if (impl_->file < 0) throw TableError("wake table '" + path + "': cannot reopen it to resume");
+      impl_->vel = Handle(H5Dopen2(impl_->file, "/velocity", H5P_DEFAULT), H5Dclose);
+      impl_->rho = Handle(H5Dopen2(impl_->file, "/density", H5P_DEFAULT), H5Dclose);
+      if (impl_->vel < 0 || impl_->rho < 0) throw TableError("wake table '" + path + "': datasets missing, cannot resume");
+      const hsize_t dv[5] = {static_cast<hsize_t>(keep_frames), nz, ny, nx, 3}, dr[4] = {static_cast<hsize_t>(keep_frames), nz, ny, nx};
+      ok(H5Dset_extent(impl_->vel, dv), "resizing /velocity");
+      ok(H5Dset_extent(impl_->rho, dr), "resizing /density");
+      info_.frames = keep_frames;
+    } else {
+      std::error_code ec;
+      if (std::filesystem::path(path).has_parent_path()) std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+      impl_->file = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+      if (impl_->file < 0) throw TableError("wake table: cannot create '" + path + "'");
+      Handle disk_type = info.half_precision ? half_type() : Handle(H5Tcopy(H5T_IEEE_F32LE), H5Tclose);
+      const hsize_t dv[5] = {0, nz, ny, nx, 3}, mv[5] = {H5S_UNLIMITED, nz, ny, nx, 3}, cv[5] = {1, nz, ny, nx, 3};
+      const hsize_t dr[4] = {0, nz, ny, nx}, mr[4] = {H5S_UNLIMITED, nz, ny, nx}, cr[4] = {1, nz, ny, nx};
+      Handle sv(H5Screate_simple(5, dv, mv), H5Sclose), sr(H5Screate_simple(4, dr, mr), H5Sclose);
+      Handle pv(H5Pcreate(H5P_DATASET_CREATE), H5Pclose), pr(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+      ok(H5Pset_chunk(pv, 5, cv), "chunking");  // one chunk per frame
+      ok(H5Pset_chunk(pr, 4, cr), "chunking");
+      impl_->vel = Handle(H5Dcreate2(impl_->file, "/velocity", disk_type, sv, H5P_DEFAULT, pv, H5P_DEFAULT), H5Dclose);
+      impl_->rho = Handle(H5Dcreate2(impl_->file, "/density", disk_type, sr, H5P_DEFAULT, pr, H5P_DEFAULT), H5Dclose);
+      if (impl_->vel < 0 || impl_->rho < 0) throw TableError("wake table: cannot create the datasets in '" + path + "'");
+      const hid_t f = impl_->file;
+      write_attr(f, "format_version", std::vector<double>{static_cast<double>(kWakeTableFormatVersion)});
+      write_attr(f, "generator", std::string("ship_lrm wake"));
+      write_attr(f, "origin", std::vector<double>(info.origin.begin(), info.origin.end()));
+      write_attr(f, "spacing", std::vector<double>{info.spacing});
+      write_attr(f, "shape", std::vector<double>{double(nx), double(ny), double(nz)});
+      write_attr(f, "frame_interval", std::vector<double>{info.frame_interval});
+      write_attr(f, "start_time", std::vector<double>{info.start_time});
+      write_attr(f, "free_stream", std::vector<double>(info.free_stream.begin(), info.free_stream.end()));
+      write_attr(f, "free_density", std::vector<double>{info.free_density});
+      write_attr(f, "ship", info.ship);
+      write_attr(f, "scale", info.scale);
+      write_attr(f, "motion", info.motion);
+      write_attr(f, "units", std::string(kWakeTableUnits));
+      write_attr(f, "frame", std::string("mean ship frame: x forward, y starboard, z down; origin at the hangar-door base"));
+      write_attr(f, "frames", std::vector<double>{0.0});
+      info_.frames = 0;
+    }
+    write_attr(impl_->file, "frames", std::vector<double>{static_cast<double>(info_.frames)});
+    H5Fflush(impl_->file, H5F_SCOPE_GLOBAL);
+  } catch (...) {
+    impl_.reset();  // its handles close under the lock
+    throw;
   }
-  write_attr(impl_->file, "frames", std::vector<double>{static_cast<double>(info_.frames)});
-  H5Fflush(impl_->file, H5F_SCOPE_GLOBAL);
 }
 
 WakeTableWriter::~WakeTableWriter() {
+  const Hdf5Lock hdf5_lock(hdf5_mutex());
   try {
     close();
   } catch (...) {
@@ -179,6 +198,7 @@ WakeTableWriter::~WakeTableWriter() {
 }
 
 void WakeTableWriter::append(const std::vector<float>& velocity, const std::vector<float>& density) {
+  const Hdf5Lock hdf5_lock(hdf5_mutex());
   if (!impl_ || impl_->file < 0) throw TableError("wake table: append after close");
   const std::size_t n = info_.points();
   if (velocity.size() != 3 * n || density.size() != n) throw TableError("wake table: a frame has the wrong number of values");
@@ -195,6 +215,7 @@ void WakeTableWriter::append(const std::vector<float>& velocity, const std::vect
 }
 
 void WakeTableWriter::write_statistic(const std::string& name, const std::vector<float>& values, const std::vector<int>& dims) {
+  const Hdf5Lock hdf5_lock(hdf5_mutex());
   std::size_t n = 1;
   std::vector<hsize_t> d;
   for (int x : dims) {
@@ -214,6 +235,7 @@ void WakeTableWriter::write_statistic(const std::string& name, const std::vector
 }
 
 void WakeTableWriter::close() {
+  const Hdf5Lock hdf5_lock(hdf5_mutex());
   if (!impl_ || impl_->file < 0) return;
   write_xdmf();  // once, not after every frame (it lists them all)
   impl_->vel.reset();
@@ -271,57 +293,68 @@ struct WakeTable::Impl {
 };
 
 WakeTable::WakeTable(const std::string& path, std::size_t window_points) : impl_(std::make_unique<Impl>()), max_points_(window_points) {
-  quiet();
-  impl_->path = path;
-  if (!std::filesystem::exists(path))
-    throw TableError("wake table '" + path + "' does not exist; make one with `ship_lrm wake --preset default --out " + path + "`");
-  if (H5Fis_hdf5(path.c_str()) <= 0) throw TableError("wake table '" + path + "' is not an HDF5 file (or is truncated)");
-  impl_->file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (impl_->file < 0) throw TableError("wake table '" + path + "' cannot be opened (corrupt or truncated HDF5)");
-  const hid_t f = impl_->file;
-  const int version = static_cast<int>(read_attr_numbers(f, "format_version", 1, path)[0]);
-  if (version != kWakeTableFormatVersion)
-    throw TableError("wake table '" + path + "' has format version " + std::to_string(version) + "; this program reads version " +
-                     std::to_string(kWakeTableFormatVersion) + " (make it again with `ship_lrm wake`)");
-  const std::string units = read_attr_string(f, "units", path);
-  if (units != kWakeTableUnits) throw TableError("wake table '" + path + "' has units '" + units + "', expected '" + kWakeTableUnits + "'");
-  const auto o = read_attr_numbers(f, "origin", 3, path);
-  info_.origin = {o[0], o[1], o[2]};
-  info_.spacing = read_attr_numbers(f, "spacing", 1, path)[0];
-  const auto sh = read_attr_numbers(f, "shape", 3, path);
-  info_.shape = {static_cast<int>(sh[0]), static_cast<int>(sh[1]), static_cast<int>(sh[2])};
-  info_.frame_interval = read_attr_numbers(f, "frame_interval", 1, path)[0];
-  info_.start_time = read_attr_numbers(f, "start_time", 1, path)[0];
-  const auto fs = read_attr_numbers(f, "free_stream", 3, path);
-  info_.free_stream = {fs[0], fs[1], fs[2]};
-  info_.free_density = read_attr_numbers(f, "free_density", 1, path)[0];
-  info_.ship = read_attr_string(f, "ship", path);
-  info_.scale = read_attr_string(f, "scale", path);
-  info_.motion = read_attr_string(f, "motion", path);
-  if (!(info_.spacing > 0) || !(info_.frame_interval > 0) || info_.shape[0] < 2 || info_.shape[1] < 2 || info_.shape[2] < 2)
-    throw TableError("wake table '" + path + "': invalid grid or frame interval attributes");
-  impl_->vel = Handle(H5Dopen2(f, "/velocity", H5P_DEFAULT), H5Dclose);
-  impl_->rho = Handle(H5Dopen2(f, "/density", H5P_DEFAULT), H5Dclose);
-  if (impl_->vel < 0 || impl_->rho < 0) throw TableError("wake table '" + path + "': /velocity or /density is missing");
-  Handle sv(H5Dget_space(impl_->vel), H5Sclose), sr(H5Dget_space(impl_->rho), H5Sclose);
-  hsize_t dv[5] = {}, dr[4] = {};
-  if (H5Sget_simple_extent_ndims(sv) != 5 || H5Sget_simple_extent_ndims(sr) != 4)
-    throw TableError("wake table '" + path + "': /velocity or /density has the wrong rank");
-  H5Sget_simple_extent_dims(sv, dv, nullptr);
-  H5Sget_simple_extent_dims(sr, dr, nullptr);
-  const hsize_t nx = info_.shape[0], ny = info_.shape[1], nz = info_.shape[2];
-  if (dv[1] != nz || dv[2] != ny || dv[3] != nx || dv[4] != 3 || dr[1] != nz || dr[2] != ny || dr[3] != nx || dv[0] != dr[0])
-    throw TableError("wake table '" + path + "': dataset sizes do not match the shape attribute");
-  const int written = static_cast<int>(read_attr_numbers(f, "frames", 1, path)[0]);
-  info_.frames = static_cast<int>(std::min<hsize_t>(dv[0], static_cast<hsize_t>(std::max(written, 0))));
-  if (info_.frames < 1) throw TableError("wake table '" + path + "' holds no frames");
-  Handle type(H5Dget_type(impl_->vel), H5Tclose);
-  info_.half_precision = H5Tget_size(type) == 2;
+  const Hdf5Lock hdf5_lock(hdf5_mutex());
+  try {
+    quiet();
+    impl_->path = path;
+    if (!std::filesystem::exists(path))
+      throw TableError("wake table '" + path + "' does not exist; make one with `ship_lrm wake --preset default --out " + path + "`");
+    if (H5Fis_hdf5(path.c_str()) <= 0) throw TableError("wake table '" + path + "' is not an HDF5 file (or is truncated)");
+    impl_->file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    if (impl_->file < 0) throw TableError("wake table '" + path + "' cannot be opened (corrupt or truncated HDF5)");
+    const hid_t f = impl_->file;
+    const int version = static_cast<int>(read_attr_numbers(f, "format_version", 1, path)[0]);
+    if (version != kWakeTableFormatVersion)
+      throw TableError("wake table '" + path + "' has format version " + std::to_string(version) + "; this program reads version " +
+                       std::to_string(kWakeTableFormatVersion) + " (make it again with `ship_lrm wake`)");
+    const std::string units = read_attr_string(f, "units", path);
+    if (units != kWakeTableUnits)
+      throw TableError("wake table '" + path + "' has units '" + units + "', expected '" + kWakeTableUnits + "'");
+    const auto o = read_attr_numbers(f, "origin", 3, path);
+    info_.origin = {o[0], o[1], o[2]};
+    info_.spacing = read_attr_numbers(f, "spacing", 1, path)[0];
+    const auto sh = read_attr_numbers(f, "shape", 3, path);
+    info_.shape = {static_cast<int>(sh[0]), static_cast<int>(sh[1]), static_cast<int>(sh[2])};
+    info_.frame_interval = read_attr_numbers(f, "frame_interval", 1, path)[0];
+    info_.start_time = read_attr_numbers(f, "start_time", 1, path)[0];
+    const auto fs = read_attr_numbers(f, "free_stream", 3, path);
+    info_.free_stream = {fs[0], fs[1], fs[2]};
+    info_.free_density = read_attr_numbers(f, "free_density", 1, path)[0];
+    info_.ship = read_attr_string(f, "ship", path);
+    info_.scale = read_attr_string(f, "scale", path);
+    info_.motion = read_attr_string(f, "motion", path);
+    if (!(info_.spacing > 0) || !(info_.frame_interval > 0) || info_.shape[0] < 2 || info_.shape[1] < 2 || info_.shape[2] < 2)
+      throw TableError("wake table '" + path + "': invalid grid or frame interval attributes");
+    impl_->vel = Handle(H5Dopen2(f, "/velocity", H5P_DEFAULT), H5Dclose);
+    impl_->rho = Handle(H5Dopen2(f, "/density", H5P_DEFAULT), H5Dclose);
+    if (impl_->vel < 0 || impl_->rho < 0) throw TableError("wake table '" + path + "': /velocity or /density is missing");
+    Handle sv(H5Dget_space(impl_->vel), H5Sclose), sr(H5Dget_space(impl_->rho), H5Sclose);
+    hsize_t dv[5] = {}, dr[4] = {};
+    if (H5Sget_simple_extent_ndims(sv) != 5 || H5Sget_simple_extent_ndims(sr) != 4)
+      throw TableError("wake table '" + path + "': /velocity or /density has the wrong rank");
+    H5Sget_simple_extent_dims(sv, dv, nullptr);
+    H5Sget_simple_extent_dims(sr, dr, nullptr);
+    const hsize_t nx = info_.shape[0], ny = info_.shape[1], nz = info_.shape[2];
+    if (dv[1] != nz || dv[2] != ny || dv[3] != nx || dv[4] != 3 || dr[1] != nz || dr[2] != ny || dr[3] != nx || dv[0] != dr[0])
+      throw TableError("wake table '" + path + "': dataset sizes do not match the shape attribute");
+    const int written = static_cast<int>(read_attr_numbers(f, "frames", 1, path)[0]);
+    info_.frames = static_cast<int>(std::min<hsize_t>(dv[0], static_cast<hsize_t>(std::max(written, 0))));
+    if (info_.frames < 1) throw TableError("wake table '" + path + "' holds no frames");
+    Handle type(H5Dget_type(impl_->vel), H5Tclose);
+    info_.half_precision = H5Tget_size(type) == 2;
+  } catch (...) {
+    impl_.reset();  // its handles close under the lock
+    throw;
+  }
 }
 
-WakeTable::~WakeTable() = default;
+WakeTable::~WakeTable() {
+  const Hdf5Lock hdf5_lock(hdf5_mutex());
+  impl_.reset();
+}
 
 void WakeTable::read_frame(int frame, std::vector<float>& velocity, std::vector<float>& density) const {
+  const Hdf5Lock hdf5_lock(hdf5_mutex());
   if (frame < 0 || frame >= info_.frames) throw TableError("wake table: frame " + std::to_string(frame) + " out of range");
   const hsize_t f = static_cast<hsize_t>(frame);
   velocity.resize(3 * info_.points());
@@ -331,6 +364,7 @@ void WakeTable::read_frame(int frame, std::vector<float>& velocity, std::vector<
 }
 
 const WakeTable::Window& WakeTable::window(int frame, const std::array<int, 3>& lo, const std::array<int, 3>& hi) {
+  const Hdf5Lock hdf5_lock(hdf5_mutex());
   // consecutive frames alternate between the two slots, so the two frames of one sample never evict
   // each other
   Window& w = w_[frame % 2];

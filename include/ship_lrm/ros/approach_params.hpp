@@ -1,0 +1,29 @@
+// ROS parameters -> the approach's core configuration (lrm::ApproachConfig), read the same way by
+// every nodelet that needs it (FlightModel and LrmSolver must agree, or the loads would differ from
+// the batch tool's). The parameters live in one namespace (launch: `approach/`, from
+// config/approach.yaml and the launch arguments); names follow `ship_lrm approach`'s options.
+#pragma once
+#include <ros/node_handle.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "ship_lrm/lrm/approach_config.hpp"
+
+namespace ship_lrm::ros_layer {
+
+// A parameter that cannot be used; what() names it and says why.
+class ParamError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Reads and checks (ParamError naming the parameter): wake_file (empty: the default table, which must
+// exist), inflow, N, reach, backend, duration, startup, table_offset, trim_speed, lattice_margin,
+// ship_walls, fuselage, wake, path/{start_distance, height, lateral, speed, decelerate_at, hover_at}.
+lrm::ApproachConfig approach_config(const ros::NodeHandle& nh);
+
+// The message for a missing wake table: names the command that makes it.
+std::string missing_table_message(const std::string& path, bool is_default);
+
+}  // namespace ship_lrm::ros_layer

@@ -1,0 +1,40 @@
+// The flight model's end of the rotor <-> LRM link over ROS (lrm::InflowLink): each request is
+// published as ship_lrm/RotorForces on `rotor/forces`; the call waits for the ship_lrm/RotorInflow
+// on `rotor/inflow` that repeats its sequence number. No answer within the timeout (wall clock)
+// means the solver is gone: lrm::LinkLost, and the flight model continues on Pitt-Peters.
+#pragma once
+#include <ros/ros.h>
+
+#include <condition_variable>
+#include <mutex>
+
+#include "ship_lrm/RotorInflow.h"
+#include "ship_lrm/lrm/inflow_link.hpp"
+
+namespace ship_lrm::ros_layer {
+
+class RosInflowLink final : public lrm::InflowLink {
+ public:
+  // nh: where rotor/forces and rotor/inflow are; the inflow callback must run on another thread
+  // than exchange() (a nodelet's callback queue while the flight loop has its own thread).
+  RosInflowLink(ros::NodeHandle& nh, double timeout_s);
+  // Waits (wall clock) until the solver is connected both ways; false after `timeout_s`.
+  bool wait_for_solver(double timeout_s);
+  rotor::RotorInflow exchange(const lrm::InflowRequest& request) override;
+  void set_timeout(double seconds) { timeout_s_ = seconds; }
+  double last_wait_s() const { return last_wait_s_; }  // wall-clock wait of the last answered request
+
+ private:
+  void on_inflow(const ship_lrm::RotorInflow::ConstPtr& msg);
+  ros::Publisher forces_;
+  ros::Subscriber inflow_;
+  double timeout_s_;
+  double last_wait_s_ = 0;
+  std::mutex mutex_;
+  std::condition_variable answered_;
+  long waiting_for_ = -1;
+  bool have_answer_ = false;
+  ship_lrm::RotorInflow answer_;
+};
+
+}  // namespace ship_lrm::ros_layer

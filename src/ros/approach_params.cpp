@@ -1,0 +1,89 @@
+// ROS parameters -> lrm::ApproachConfig (see approach_params.hpp).
+#include "ship_lrm/ros/approach_params.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include "ship_lrm/lbm/solver.hpp"
+#include "ship_lrm/wake/wake_precompute.hpp"
+
+namespace ship_lrm::ros_layer {
+namespace {
+
+std::string where(const ros::NodeHandle& nh, const std::string& name) { return nh.resolveName(name); }
+
+// A parameter of type T: absent keeps `value`; present with another type is an error naming it.
+template <typename T>
+void read(const ros::NodeHandle& nh, const std::string& name, T& value) {
+  if (!nh.hasParam(name)) return;
+  T v{};
+  if (!nh.getParam(name, v)) throw ParamError("parameter " + where(nh, name) + " has the wrong type");
+  value = v;
+}
+
+void read_number(const ros::NodeHandle& nh, const std::string& name, double& value) {
+  if (!nh.hasParam(name)) return;
+  double d = 0;
+  int i = 0;
+  if (nh.getParam(name, d))
+    value = d;
+  else if (nh.getParam(name, i))
+    value = i;
+  else
+    throw ParamError("parameter " + where(nh, name) + " must be a number");
+  if (!std::isfinite(value)) throw ParamError("parameter " + where(nh, name) + " must be finite");
+}
+
+}  // namespace
+
+std::string missing_table_message(const std::string& path, bool is_default) {
+  if (is_default) return "the default wake table " + path + " does not exist yet; make it with `ship_lrm wake --preset default`";
+  return "wake table '" + path + "' not found; make one with `ship_lrm wake --preset default --out " + path + "`";
+}
+
+lrm::ApproachConfig approach_config(const ros::NodeHandle& nh) {
+  lrm::ApproachConfig c;
+  read(nh, "wake_file", c.table);
+  const bool is_default = c.table.empty();
+  if (is_default) c.table = wake::default_table_path();
+  if (!std::filesystem::exists(c.table)) throw ParamError(missing_table_message(c.table, is_default));
+  read(nh, "inflow", c.inflow);
+  if (c.inflow != "lrm" && c.inflow != "pitt_peters")
+    throw ParamError("parameter " + where(nh, "inflow") + " must be lrm or pitt_peters, got '" + c.inflow + "'");
+  int nodes = 32;  // as `ship_lrm approach`
+  read(nh, "N", nodes);
+  if (nodes < 16 || nodes > 512) throw ParamError("parameter " + where(nh, "N") + " must lie in [16, 512], got " + std::to_string(nodes));
+  c.lrm.nodes = nodes;
+  read_number(nh, "reach", c.lrm.reach);
+  if (!(c.lrm.reach >= 1.0 && c.lrm.reach <= 8.0))
+    throw ParamError("parameter " + where(nh, "reach") + " must lie in [1, 8] (domain edge / 4R)");
+  std::string backend = "auto";
+  read(nh, "backend", backend);
+  try {
+    c.lrm.backend = lbm::parse_backend(backend);
+  } catch (const std::exception& e) {
+    throw ParamError("parameter " + where(nh, "backend") + ": " + e.what());
+  }
+  read_number(nh, "duration", c.duration);
+  read_number(nh, "startup", c.startup);
+  read_number(nh, "table_offset", c.table_offset);
+  read_number(nh, "trim_speed", c.trim_speed);
+  read_number(nh, "lattice_margin", c.lattice_margin);
+  read(nh, "ship_walls", c.ship_walls);
+  read(nh, "fuselage", c.fuselage);
+  read(nh, "wake", c.wake);
+  read_number(nh, "path/start_distance", c.path.start_distance);
+  read_number(nh, "path/height", c.path.height);
+  read_number(nh, "path/lateral", c.path.lateral);
+  read_number(nh, "path/speed", c.path.speed);
+  read_number(nh, "path/decelerate_at", c.path.decelerate_at);
+  read_number(nh, "path/hover_at", c.path.hover_at);
+  try {
+    lrm::validate(c);
+  } catch (const std::exception& e) {
+    throw ParamError(std::string("parameters under ") + nh.getNamespace() + ": " + e.what());
+  }
+  return c;
+}
+
+}  // namespace ship_lrm::ros_layer

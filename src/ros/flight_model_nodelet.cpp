@@ -1,0 +1,269 @@
+// ship_lrm/FlightModel: the Bo 105 blade-element flight model (core: lrm::ShipApproach, the approach
+// of thesis 9.1 with fixed controls along the prescribed path). Translates only: parameters ->
+// ApproachConfig, the inflow link -> ROS topics (RosInflowLink), the core's samples -> messages and tf.
+// Runs its loop on its own thread in simulated time (publishes /clock: ROS time = clock_offset +
+// simulated time), or paced to the wall clock (realtime:=true). When the LRM solver stops answering,
+// the core falls back to Pitt-Peters and the diagnostics say so at ERROR level.
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <geometry_msgs/WrenchStamped.h>
+#include <nav_msgs/Odometry.h>
+#include <nodelet/nodelet.h>
+#include <rosgraph_msgs/Clock.h>
+#include <tf2_ros/static_transform_broadcaster.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <atomic>
+#include <chrono>
+#include <pluginlib/class_list_macros.hpp>
+#include <thread>
+
+#include "ship_lrm/RotorLoads.h"
+#include "ship_lrm/flight/parameters.hpp"
+#include "ship_lrm/lrm/approach.hpp"
+#include "ship_lrm/ros/approach_params.hpp"
+#include "ship_lrm/ros/conversions.hpp"
+#include "ship_lrm/ros/ros_inflow_link.hpp"
+#include "ship_lrm/ros/run_status.hpp"
+
+namespace ship_lrm::ros_layer {
+
+class FlightModelNodelet : public nodelet::Nodelet {
+ public:
+  ~FlightModelNodelet() override {
+    stop_ = true;
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  void onInit() override {
+    ros::NodeHandle& nh = getNodeHandle();
+    ros::NodeHandle& pnh = getPrivateNodeHandle();
+    try {
+      cfg_ = approach_config(ros::NodeHandle(nh, "approach"));
+      pnh.param("realtime", realtime_, false);
+      pnh.param("lrm_timeout", lrm_timeout_, 30.0);
+      pnh.param("connect_timeout", connect_timeout_, 60.0);
+      pnh.param("output_interval", output_interval_, 0.01);
+      pnh.param("tf_interval", tf_interval_, 0.02);
+      pnh.param("clock_offset", clock_offset_, 1.0);
+      pnh.param("shutdown_when_done", shutdown_when_done_, true);
+      pnh.param("wait_for_loads_subscribers", wait_for_subscribers_, 0);
+      std::string config;
+      pnh.param<std::string>("helicopter_config", config, "");
+      params_ = config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(config);
+      if (!(lrm_timeout_ > 0)) throw ParamError("parameter " + pnh.resolveName("lrm_timeout") + " must be > 0 s");
+      if (!(output_interval_ > 0)) throw ParamError("parameter " + pnh.resolveName("output_interval") + " must be > 0 s");
+      if (!(tf_interval_ > 0)) throw ParamError("parameter " + pnh.resolveName("tf_interval") + " must be > 0 s");
+      if (!(clock_offset_ > 0)) throw ParamError("parameter " + pnh.resolveName("clock_offset") + " must be > 0 s");
+    } catch (const std::exception& e) {
+      NODELET_FATAL("FlightModel: %s", e.what());
+      report_failure(getNodeHandle(), std::string("FlightModel: ") + e.what());
+      return;
+    }
+    clock_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10);
+    loads_ = nh.advertise<ship_lrm::RotorLoads>("rotor/loads", 100);
+    wrench_ = nh.advertise<geometry_msgs::WrenchStamped>("rotor/wrench", 10);
+    odom_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
+    status_ = nh.advertise<std_msgs::String>(kRunStatusTopic, 1, true);
+    diagnostics_.setHardwareID("ship_lrm flight model");
+    diagnostics_.add("flight model", this, &FlightModelNodelet::diagnose);
+    if (cfg_.inflow == "lrm") link_ = std::make_shared<RosInflowLink>(nh, lrm_timeout_);
+    thread_ = std::thread([this] { run(); });
+  }
+
+  ros::Time stamp(double t) const { return ros::Time(clock_offset_ + t); }
+
+  void run() {
+    if (!realtime_) publish_clock(0.0);
+    // a recorder (rosbag) or a test that must see every load subscribes before the first step
+    const auto wait_until = std::chrono::steady_clock::now() + std::chrono::duration<double>(connect_timeout_);
+    while (!stop_ && ros::ok() && static_cast<int>(loads_.getNumSubscribers()) < wait_for_subscribers_ &&
+           std::chrono::steady_clock::now() < wait_until)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (static_cast<int>(loads_.getNumSubscribers()) < wait_for_subscribers_)
+      NODELET_WARN("FlightModel: only %u of %d subscribers on rotor/loads after %g s; starting", loads_.getNumSubscribers(),
+                   wait_for_subscribers_, connect_timeout_);
+    if (link_ && !link_->wait_for_solver(connect_timeout_)) {
+      NODELET_ERROR("FlightModel: no LRM solver on %s within %g s; flying on Pitt-Peters",
+                    getNodeHandle().resolveName("rotor/forces").c_str(), connect_timeout_);
+      link_->set_timeout(1e-3);
+    }
+    try {
+      approach_ = std::make_unique<lrm::ShipApproach>(cfg_, params_, link_);
+    } catch (const std::exception& e) {
+      NODELET_FATAL("FlightModel: %s", e.what());
+      report_failure(getNodeHandle(), std::string("FlightModel: ") + e.what());
+      return;
+    }
+    NODELET_INFO("FlightModel: approach on %s, inflow %s, %g s; trim %.2f %% collective", cfg_.table.c_str(), cfg_.inflow.c_str(),
+                 cfg_.duration, approach_->trim().controls.collective);
+    send_static_tf();
+    publish(true);
+    const auto wall_start = std::chrono::steady_clock::now();
+    while (!stop_ && ros::ok() && !approach_->done()) {
+      const auto t0 = std::chrono::steady_clock::now();
+      approach_->step();
+      step_wall_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double t = approach_->time();
+      if (realtime_) {
+        const auto due = wall_start + std::chrono::duration<double>(t);
+        if (std::chrono::steady_clock::now() > due)
+          ++deadline_misses_;
+        else
+          std::this_thread::sleep_until(due);
+      } else {
+        publish_clock(t);
+      }
+      ++steps_;
+      publish(false);
+      report_fallback();
+    }
+    if (approach_ && approach_->done()) {
+      NODELET_INFO("FlightModel: approach finished at t = %.3f s (%ld steps, t_clock/t_sim %.2f)", approach_->time(), steps_,
+                   approach_->wall_seconds() / std::max(approach_->time(), 1e-9));
+      diagnostics_.force_update();
+      status_.publish(done_message());  // approach_watch.py ends the launch (run_status.hpp)
+    }
+  }
+
+  void publish_clock(double t) {
+    rosgraph_msgs::Clock c;
+    c.clock = stamp(t);
+    clock_.publish(c);
+  }
+
+  void report_fallback() {
+    const lrm::LinkedInflow* l = approach_->linked_inflow();
+    if (l && l->lost() && !reported_lost_) {
+      reported_lost_ = true;
+      NODELET_ERROR("FlightModel: LRM lost at t = %.3f s, continuing on Pitt-Peters: %s", approach_->time(), l->lost_reason().c_str());
+      diagnostics_.force_update();
+    }
+  }
+
+  void send_static_tf() {
+    std::vector<geometry_msgs::TransformStamped> fixed(3);
+    fixed[0].header.frame_id = "world";
+    fixed[0].child_frame_id = "world_ned";
+    fixed[0].transform = world_to_ned();
+    fixed[1].header.frame_id = "base_link_frd";
+    fixed[1].child_frame_id = "base_link";
+    fixed[1].transform = frd_to_flu();
+    // main_rotor: the thesis' mr frame at the hub, as its FLU twin (x forward, y port, z up the shaft)
+    const auto& heli = approach_->helicopter();
+    const Eigen::Matrix3d mr_flu = heli.mr_to_body() * Eigen::Vector3d(1, -1, -1).asDiagonal();
+    fixed[2].header.frame_id = "base_link_frd";
+    fixed[2].child_frame_id = "main_rotor";
+    fixed[2].transform = transform(heli.parameters().main_rotor.hub_position, Eigen::Quaterniond(mr_flu));
+    for (auto& f : fixed) f.header.stamp = stamp(0);
+    static_tf_.sendTransform(fixed);
+  }
+
+  void publish(bool first) {
+    const lrm::ApproachSample& s = approach_->sample();
+    const ros::Time now = stamp(s.time);
+    const double eps = 0.5 * approach_->time_step();
+    if (first || s.time >= next_output_ - eps) {
+      next_output_ += first ? 0.0 : output_interval_;  // on the grid of `ship_lrm approach --output-interval`
+      if (first) next_output_ = output_interval_;
+      ship_lrm::RotorLoads m;
+      m.header.stamp = now;
+      m.header.frame_id = "main_rotor";
+      m.time = s.time;
+      m.thrust = s.thrust;
+      m.ct = s.ct;
+      m.cmx = s.cmx;
+      m.cmy = s.cmy;
+      m.main_power = s.main_power;
+      m.distance = s.distance;
+      m.height_above_deck = s.height_above_deck;
+      m.speed = s.speed;
+      m.inflow_mean = to_msg(s.inflow_mean);
+      const lrm::LinkedInflow* l = approach_->linked_inflow();
+      m.fallback = l && l->lost();
+      m.inflow_model = (cfg_.inflow == "lrm" && !m.fallback) ? "lrm" : "pitt_peters";
+      loads_.publish(m);
+      // the rotor's aerodynamic load in main_rotor (FLU twin of mr: y and z change sign)
+      const auto& o = approach_->helicopter().outputs();
+      geometry_msgs::WrenchStamped w;
+      w.header = m.header;
+      w.wrench.force = to_msg(Eigen::Vector3d(o.rotor.aero_force.x(), -o.rotor.aero_force.y(), -o.rotor.aero_force.z()));
+      w.wrench.torque = to_msg(Eigen::Vector3d(o.rotor.aero_moment.x(), -o.rotor.aero_moment.y(), -o.rotor.aero_moment.z()));
+      wrench_.publish(w);
+    }
+    if (first || s.time >= next_tf_ - eps) {
+      next_tf_ = first ? tf_interval_ : next_tf_ + tf_interval_;
+      const flight::RigidBodyState& b = approach_->helicopter().body();
+      geometry_msgs::TransformStamped t;
+      t.header.stamp = now;
+      t.header.frame_id = "world_ned";
+      t.child_frame_id = "base_link_frd";
+      t.transform = transform(b.position, b.attitude);
+      tf_.sendTransform(t);
+      nav_msgs::Odometry od;
+      od.header.stamp = now;
+      od.header.frame_id = "world";
+      od.child_frame_id = "base_link";
+      const Eigen::Vector3d p = ned_to_enu(b.position);
+      od.pose.pose.position.x = p.x();
+      od.pose.pose.position.y = p.y();
+      od.pose.pose.position.z = p.z();
+      const Eigen::Quaterniond q = ned_to_enu(b.attitude);
+      od.pose.pose.orientation.x = q.x();
+      od.pose.pose.orientation.y = q.y();
+      od.pose.pose.orientation.z = q.z();
+      od.pose.pose.orientation.w = q.w();
+      const Eigen::Vector3d flu(1, -1, -1);  // body FRD -> FLU
+      od.twist.twist.linear = to_msg(flu.cwiseProduct(b.velocity));
+      od.twist.twist.angular = to_msg(flu.cwiseProduct(b.rate));
+      odom_.publish(od);
+      diagnostics_.update();
+    }
+  }
+
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
+    if (!approach_) {
+      stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "starting");
+      return;
+    }
+    const lrm::LinkedInflow* l = approach_->linked_inflow();
+    const double t = approach_->time();
+    const double ratio = t > 0 ? approach_->wall_seconds() / t : 0.0;
+    if (l && l->lost())
+      stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "LRM lost, Pitt-Peters fallback: " + l->lost_reason());
+    else if (!std::isfinite(approach_->sample().thrust))
+      stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "rotor loads not finite");
+    else if (realtime_ && deadline_misses_ > 0)
+      stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "deadline misses");
+    else
+      stat.summary(diagnostic_msgs::DiagnosticStatus::OK, cfg_.inflow + " inflow");
+    stat.add("simulated time (s)", t);
+    stat.add("steps", steps_);
+    stat.add("step time (ms)", 1e3 * step_wall_s_);
+    stat.add("real-time ratio t_clock/t_sim", ratio);
+    stat.add("deadline misses", deadline_misses_);
+    stat.add("inflow model", l && l->lost() ? "pitt_peters (fallback)" : cfg_.inflow);
+    if (l) stat.add("fallback steps", l->fallback_calls());
+    stat.add("C_T", approach_->sample().ct);
+  }
+
+  lrm::ApproachConfig cfg_;
+  flight::HelicopterParameters params_;
+  bool realtime_ = false, shutdown_when_done_ = true, reported_lost_ = false;
+  double lrm_timeout_ = 30, connect_timeout_ = 60, output_interval_ = 0.01, tf_interval_ = 0.02, clock_offset_ = 1.0;
+  double next_output_ = 0, next_tf_ = 0, step_wall_s_ = 0;
+  long steps_ = 0, deadline_misses_ = 0;
+  int wait_for_subscribers_ = 0;
+  std::shared_ptr<RosInflowLink> link_;
+  std::unique_ptr<lrm::ShipApproach> approach_;
+  ros::Publisher clock_, loads_, wrench_, odom_, status_;
+  tf2_ros::TransformBroadcaster tf_;
+  tf2_ros::StaticTransformBroadcaster static_tf_;
+  diagnostic_updater::Updater diagnostics_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+}  // namespace ship_lrm::ros_layer
+
+PLUGINLIB_EXPORT_CLASS(ship_lrm::ros_layer::FlightModelNodelet, nodelet::Nodelet)

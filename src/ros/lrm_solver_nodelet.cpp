@@ -1,0 +1,195 @@
+// ship_lrm/LrmSolver: the LRM domain of the approach (core: lrm::ApproachFluid) on the CPU or a GPU
+// (backend cpu|cuda|auto). Translates only: each ship_lrm/RotorForces on rotor/forces is served by the
+// core (walls and faces placed for its time and pose, then the LBM advanced with its loads) and
+// answered on rotor/inflow; the domain's pose goes out as tf world_ned -> lrm_domain (the mr frame at
+// the hub, x forward, y starboard, z down), a plane through the hub as lrm/slice (PointCloud2 with
+// x, y, z, speed, u, v, w, wall), the domain's box as lrm/domain (Marker), and diagnostics.
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <nodelet/nodelet.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <sensor_msgs/point_cloud2_iterator.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <visualization_msgs/Marker.h>
+
+#include <chrono>
+#include <pluginlib/class_list_macros.hpp>
+
+#include "ship_lrm/flight/parameters.hpp"
+#include "ship_lrm/lrm/approach_fluid.hpp"
+#include "ship_lrm/lrm/domain_slice.hpp"
+#include "ship_lrm/ros/approach_params.hpp"
+#include "ship_lrm/ros/conversions.hpp"
+#include "ship_lrm/ros/run_status.hpp"
+
+namespace ship_lrm::ros_layer {
+
+class LrmSolverNodelet : public nodelet::Nodelet {
+ private:
+  void onInit() override {
+    ros::NodeHandle& nh = getNodeHandle();
+    ros::NodeHandle& pnh = getPrivateNodeHandle();
+    try {
+      const lrm::ApproachConfig cfg = approach_config(ros::NodeHandle(nh, "approach"));
+      pnh.param("slice_interval", slice_interval_, 0.1);
+      pnh.param("slice_normal", slice_normal_, 1);
+      pnh.param("clock_offset", clock_offset_, 1.0);
+      if (slice_normal_ < 0 || slice_normal_ > 2)
+        throw ParamError("parameter " + pnh.resolveName("slice_normal") + " must be 0 (x), 1 (y) or 2 (z)");
+      if (!(slice_interval_ > 0)) throw ParamError("parameter " + pnh.resolveName("slice_interval") + " must be > 0 s");
+      std::string config;
+      pnh.param<std::string>("helicopter_config", config, "");
+      const flight::HelicopterParameters p = config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(config);
+      if (cfg.inflow != "lrm")
+        NODELET_WARN("LrmSolver: approach/inflow is %s; the flight model will not ask for the LRM", cfg.inflow.c_str());
+      fluid_ = std::make_unique<lrm::ApproachFluid>(cfg, p);
+    } catch (const std::exception& e) {
+      NODELET_FATAL("LrmSolver: %s", e.what());
+      report_failure(getNodeHandle(), std::string("LrmSolver: ") + e.what());
+      return;
+    }
+    const lrm::LrmDomain& d = fluid_->domain();
+    NODELET_INFO("LrmSolver: N = %d, a = %g, %d^3 cells, %s, LBM step %.3f ms", d.config().nodes, d.config().reach, d.cells_per_edge(),
+                 fluid_->domain().solver().backend_name(), 1e3 * d.time_step());
+    inflow_ = nh.advertise<ship_lrm::RotorInflow>("rotor/inflow", 4);
+    slice_ = nh.advertise<sensor_msgs::PointCloud2>("lrm/slice", 2);
+    box_ = nh.advertise<visualization_msgs::Marker>("lrm/domain", 2, true);
+    diagnostics_.setHardwareID("ship_lrm LRM solver");
+    diagnostics_.add("LRM solver", this, &LrmSolverNodelet::diagnose);
+    forces_ = nh.subscribe("rotor/forces", 4, &LrmSolverNodelet::on_forces, this, ros::TransportHints().tcpNoDelay());
+  }
+
+  ros::Time stamp(double t) const { return ros::Time(clock_offset_ + t); }
+
+  void on_forces(const ship_lrm::RotorForces::ConstPtr& msg) {
+    lrm::InflowRequest r;
+    try {
+      r = from_msg(*msg);
+    } catch (const std::exception& e) {
+      NODELET_ERROR_THROTTLE(5, "LrmSolver: ignoring a malformed request: %s", e.what());
+      return;
+    }
+    if (diverged_) return;  // the flight model falls back after its timeout
+    const long steps0 = fluid_->domain().solver().steps_done();
+    const auto t0 = std::chrono::steady_clock::now();
+    rotor::RotorInflow in;
+    try {
+      in = fluid_->serve(r);
+    } catch (const std::exception& e) {
+      diverged_ = true;
+      failure_ = e.what();
+      NODELET_ERROR("LrmSolver: stopped at t = %.3f s: %s", r.state.time, e.what());
+      diagnostics_.force_update();
+      return;
+    }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const long steps = fluid_->domain().solver().steps_done() - steps0;
+    if (steps > 0) {
+      step_ms_ = 1e3 * wall / steps;
+      const double cells = std::pow(fluid_->domain().cells_per_edge(), 3);
+      mlups_ = cells * steps / wall * 1e-6;
+    }
+    ++served_;
+    ship_lrm::RotorInflow answer = to_msg(in, r.sequence, r.state.time);
+    answer.header.stamp = stamp(r.state.time);
+    answer.header.frame_id = "lrm_domain";
+    inflow_.publish(answer);
+    publish_views(r);
+    diagnostics_.update();
+  }
+
+  void publish_views(const lrm::InflowRequest& r) {
+    const ros::Time now = stamp(r.state.time);
+    geometry_msgs::TransformStamped t;
+    t.header.stamp = now;
+    t.header.frame_id = "world_ned";
+    t.child_frame_id = "lrm_domain";
+    t.transform = transform(r.pose.hub, Eigen::Quaterniond(r.pose.rotation));
+    tf_.sendTransform(t);
+    if (!box_sent_) {
+      box_sent_ = true;
+      lrm::LrmDomain& d = fluid_->domain();
+      visualization_msgs::Marker m;
+      m.header.stamp = now;
+      m.header.frame_id = "lrm_domain";
+      m.ns = "lrm";
+      m.type = visualization_msgs::Marker::CUBE;
+      m.action = visualization_msgs::Marker::ADD;
+      const int n = d.cells_per_edge() - 1;
+      const Vec3 lo = d.position(0, 0, 0), hi = d.position(n, n, n);
+      m.pose.position.x = 0.5 * (lo.x() + hi.x());
+      m.pose.position.y = 0.5 * (lo.y() + hi.y());
+      m.pose.position.z = 0.5 * (lo.z() + hi.z());
+      m.pose.orientation.w = 1;
+      m.scale.x = hi.x() - lo.x();
+      m.scale.y = hi.y() - lo.y();
+      m.scale.z = hi.z() - lo.z();
+      m.color.r = 0.2f;
+      m.color.g = 0.6f;
+      m.color.b = 1.0f;
+      m.color.a = 0.15f;
+      box_.publish(m);
+    }
+    if (r.kind == lrm::InflowRequest::Kind::Advance && r.state.time + 1e-9 < next_slice_) return;
+    next_slice_ = r.state.time + slice_interval_;
+    const lrm::DomainSlice s = lrm::domain_slice(fluid_->domain(), slice_normal_);
+    max_mach_ = s.max_mach;
+    if (slice_.getNumSubscribers() == 0) return;
+    sensor_msgs::PointCloud2 cloud;
+    cloud.header.stamp = now;
+    cloud.header.frame_id = "lrm_domain";
+    sensor_msgs::PointCloud2Modifier mod(cloud);
+    mod.setPointCloud2Fields(8, "x", 1, sensor_msgs::PointField::FLOAT32, "y", 1, sensor_msgs::PointField::FLOAT32, "z", 1,
+                             sensor_msgs::PointField::FLOAT32, "speed", 1, sensor_msgs::PointField::FLOAT32, "u", 1,
+                             sensor_msgs::PointField::FLOAT32, "v", 1, sensor_msgs::PointField::FLOAT32, "w", 1,
+                             sensor_msgs::PointField::FLOAT32, "wall", 1, sensor_msgs::PointField::FLOAT32);
+    mod.resize(s.position.size());
+    sensor_msgs::PointCloud2Iterator<float> x(cloud, "x"), sp(cloud, "speed"), u(cloud, "u"), wall(cloud, "wall");
+    for (std::size_t i = 0; i < s.position.size(); ++i, ++x, ++sp, ++u, ++wall) {
+      x[0] = static_cast<float>(s.position[i].x());
+      x[1] = static_cast<float>(s.position[i].y());
+      x[2] = static_cast<float>(s.position[i].z());
+      sp[0] = static_cast<float>(s.velocity[i].norm());
+      u[0] = static_cast<float>(s.velocity[i].x());
+      u[1] = static_cast<float>(s.velocity[i].y());
+      u[2] = static_cast<float>(s.velocity[i].z());
+      wall[0] = s.wall[i];
+    }
+    slice_.publish(cloud);
+  }
+
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
+    if (!fluid_) {
+      stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "not started");
+      return;
+    }
+    if (diverged_)
+      stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "stopped: " + failure_);
+    else if (max_mach_ > 0.5)
+      stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "lattice Mach above 0.5");
+    else
+      stat.summary(diagnostic_msgs::DiagnosticStatus::OK, "running");
+    stat.add("requests served", served_);
+    stat.add("LBM steps", fluid_->domain().solver().steps_done());
+    stat.add("LBM step (ms)", step_ms_);
+    stat.add("MLUPS", mlups_);
+    stat.add("max lattice Mach (slice)", max_mach_);
+    stat.add("wall cells", fluid_->domain().wall_cells());
+    stat.add("ship voxelisations", fluid_->voxelisations());
+    stat.add("face refreshes", fluid_->face_refreshes());
+  }
+
+  std::unique_ptr<lrm::ApproachFluid> fluid_;
+  double slice_interval_ = 0.1, clock_offset_ = 1.0, next_slice_ = 0, step_ms_ = 0, mlups_ = 0, max_mach_ = 0;
+  int slice_normal_ = 1;
+  long served_ = 0;
+  bool diverged_ = false, box_sent_ = false;
+  std::string failure_;
+  ros::Publisher inflow_, slice_, box_;
+  ros::Subscriber forces_;
+  tf2_ros::TransformBroadcaster tf_;
+  diagnostic_updater::Updater diagnostics_;
+};
+
+}  // namespace ship_lrm::ros_layer
+
+PLUGINLIB_EXPORT_CLASS(ship_lrm::ros_layer::LrmSolverNodelet, nodelet::Nodelet)

@@ -1,0 +1,55 @@
+// The flight model's end of the rotor <-> LRM link over ROS (see ros_inflow_link.hpp).
+#include "ship_lrm/ros/ros_inflow_link.hpp"
+
+#include <chrono>
+#include <sstream>
+#include <thread>
+
+#include "ship_lrm/ros/conversions.hpp"
+
+namespace ship_lrm::ros_layer {
+
+RosInflowLink::RosInflowLink(ros::NodeHandle& nh, double timeout_s) : timeout_s_(timeout_s) {
+  forces_ = nh.advertise<ship_lrm::RotorForces>("rotor/forces", 4);
+  inflow_ = nh.subscribe("rotor/inflow", 4, &RosInflowLink::on_inflow, this, ros::TransportHints().tcpNoDelay());
+}
+
+bool RosInflowLink::wait_for_solver(double timeout_s) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (ros::ok() && std::chrono::steady_clock::now() < until) {
+    if (forces_.getNumSubscribers() > 0 && inflow_.getNumPublishers() > 0) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+void RosInflowLink::on_inflow(const ship_lrm::RotorInflow::ConstPtr& msg) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (msg->sequence != waiting_for_) return;  // a late answer to a request given up on
+  answer_ = *msg;
+  have_answer_ = true;
+  answered_.notify_all();
+}
+
+rotor::RotorInflow RosInflowLink::exchange(const lrm::InflowRequest& request) {
+  ship_lrm::RotorForces msg = to_msg(request);
+  msg.header.stamp = ros::Time::now();
+  std::unique_lock<std::mutex> lock(mutex_);
+  waiting_for_ = request.sequence;
+  have_answer_ = false;
+  const auto start = std::chrono::steady_clock::now();
+  forces_.publish(msg);
+  const bool ok = answered_.wait_for(lock, std::chrono::duration<double>(timeout_s_), [&] { return have_answer_ || !ros::ok(); });
+  waiting_for_ = -1;
+  if (!ok || !have_answer_) {
+    std::ostringstream m;
+    m << "the LRM solver did not answer request " << request.sequence << " (t = " << request.state.time << " s) within " << timeout_s_
+      << " s";
+    if (forces_.getNumSubscribers() == 0) m << "; nothing subscribes to " << forces_.getTopic() << " any more";
+    throw lrm::LinkLost(m.str());
+  }
+  last_wait_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return from_msg(answer_);
+}
+
+}  // namespace ship_lrm::ros_layer

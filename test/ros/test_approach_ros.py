@@ -1,0 +1,86 @@
+#!/usr/bin/python3
+"""Issue 6 acceptance 1 and 2 (rostest, launched by approach.test): the approach in simulated time on
+a tiny table publishes its topics and every tf frame; its loads are finite and identical, sample by
+sample, to those of the ROS-free batch tool `ship_lrm approach` for the same configuration."""
+import csv
+import math
+import os
+import subprocess
+import tempfile
+import time
+import unittest
+
+import rospy
+import roslib.packages
+import rostest
+import tf2_ros
+from diagnostic_msgs.msg import DiagnosticArray
+from geometry_msgs.msg import TwistStamped
+from nav_msgs.msg import Odometry
+from sensor_msgs.msg import PointCloud2
+
+from ship_lrm.msg import RotorLoads, WakeInfo
+
+DURATION = 1.0
+FRAMES = ["world", "world_ned", "base_link", "base_link_frd", "main_rotor", "lrm_domain", "ship", "ship_frd"]
+
+
+class ApproachLaunch(unittest.TestCase):
+    def test_topics_frames_and_loads_as_the_batch_tool(self):
+        loads, seen = [], {}
+
+        def count(name):
+            return lambda msg: seen.__setitem__(name, seen.get(name, 0) + 1)
+
+        rospy.Subscriber("/rotor/loads", RotorLoads, loads.append)
+        for topic, kind in [("/odom", Odometry), ("/ship/twist", TwistStamped), ("/lrm/slice", PointCloud2),
+                            ("/wake/info", WakeInfo), ("/diagnostics", DiagnosticArray)]:
+            rospy.Subscriber(topic, kind, count(topic))
+        buffer = tf2_ros.Buffer(cache_time=rospy.Duration(100))
+        tf2_ros.TransformListener(buffer)
+        deadline = time.time() + 240
+        while time.time() < deadline and not (loads and loads[-1].time >= DURATION - 1e-3):
+            time.sleep(0.1)
+        self.assertTrue(loads, "no rotor/loads within 240 s")
+        self.assertGreaterEqual(loads[-1].time, DURATION - 1e-3, "the approach did not reach its end")
+        time.sleep(1.0)  # let the ship's timer and the last diagnostics go out
+
+        # every load finite, from the LRM, one every 0.01 s (the flight model waits for this subscriber)
+        for m in loads:
+            for v in (m.thrust, m.ct, m.cmx, m.cmy, m.main_power):
+                self.assertTrue(math.isfinite(v), "non-finite load at t = %g" % m.time)
+            self.assertEqual(m.inflow_model, "lrm")
+            self.assertFalse(m.fallback)
+        self.assertEqual(len(loads), int(round(DURATION / 0.01)) + 1)  # t = 0, 0.01, ..., 1.0
+        for topic in ["/odom", "/ship/twist", "/lrm/slice", "/wake/info", "/diagnostics"]:
+            self.assertGreater(seen.get(topic, 0), 0, "nothing on " + topic)
+        self.assertGreaterEqual(seen["/odom"], int(DURATION / 0.02) - 2)  # 50 Hz in simulated time
+        for frame in FRAMES[1:]:
+            self.assertTrue(buffer.can_transform("world", frame, rospy.Time(0), rospy.Duration(5.0)),
+                            "no tf from world to " + frame)
+
+        # the batch tool, same configuration: identical loads at every shared time
+        exe = roslib.packages.find_node("ship_lrm", "ship_lrm")
+        self.assertTrue(exe, "the ship_lrm program is not in the catkin workspace")
+        out = tempfile.mkdtemp(prefix="ship_lrm_rostest_")
+        subprocess.check_call([exe[0], "approach", "--wake", rospy.get_param("~wake_file"), "--backend", "cpu", "--N", "16",
+                               "--duration", str(DURATION), "--startup", "0.1", "--start-distance", "10", "--height", "5",
+                               "--output-interval", "0.01", "--no-plot", "--out", out], stdout=subprocess.DEVNULL)
+        with open(os.path.join(out, "approach.csv")) as f:
+            rows = list(csv.DictReader(f))
+        batch = {round(float(r["time_s"]), 6): r for r in rows}
+        compared = 0
+        for m in loads:
+            r = batch.get(round(m.time, 6))
+            if r is None:
+                continue
+            self.assertEqual(m.ct, float(r["CT"]), "C_T differs at t = %g" % m.time)
+            self.assertEqual(m.cmx, float(r["CMx"]), "C_Mx differs at t = %g" % m.time)
+            self.assertEqual(m.cmy, float(r["CMy"]), "C_My differs at t = %g" % m.time)
+            compared += 1
+        self.assertEqual(compared, len(loads), "the ROS and batch sample times do not match")
+
+
+if __name__ == "__main__":
+    rospy.init_node("test_approach_ros")
+    rostest.rosrun("ship_lrm", "approach_ros", ApproachLaunch)
