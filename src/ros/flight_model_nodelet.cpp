@@ -31,6 +31,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
  public:
   ~FlightModelNodelet() override {
     stop_ = true;
+    if (link_) link_->cancel();  // a wait for the solver ends now, not after lrm_timeout
     if (thread_.joinable()) thread_.join();
   }
 

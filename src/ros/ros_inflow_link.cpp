@@ -18,6 +18,10 @@ bool RosInflowLink::wait_for_solver(double timeout_s) {
   const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   while (ros::ok() && std::chrono::steady_clock::now() < until) {
     if (forces_.getNumSubscribers() > 0 && inflow_.getNumPublishers() > 0) return true;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (cancelled_) return false;
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   return false;
@@ -31,6 +35,12 @@ void RosInflowLink::on_inflow(const ship_lrm::RotorInflow::ConstPtr& msg) {
   answered_.notify_all();
 }
 
+void RosInflowLink::cancel() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  cancelled_ = true;
+  answered_.notify_all();
+}
+
 rotor::RotorInflow RosInflowLink::exchange(const lrm::InflowRequest& request) {
   ship_lrm::RotorForces msg = to_msg(request);
   msg.header.stamp = ros::Time::now();
@@ -39,7 +49,8 @@ rotor::RotorInflow RosInflowLink::exchange(const lrm::InflowRequest& request) {
   have_answer_ = false;
   const auto start = std::chrono::steady_clock::now();
   forces_.publish(msg);
-  const bool ok = answered_.wait_for(lock, std::chrono::duration<double>(timeout_s_), [&] { return have_answer_ || !ros::ok(); });
+  const bool ok =
+      answered_.wait_for(lock, std::chrono::duration<double>(timeout_s_), [&] { return have_answer_ || cancelled_ || !ros::ok(); });
   waiting_for_ = -1;
   if (!ok || !have_answer_) {
     std::ostringstream m;

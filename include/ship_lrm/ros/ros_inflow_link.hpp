@@ -22,6 +22,8 @@ class RosInflowLink final : public lrm::InflowLink {
   bool wait_for_solver(double timeout_s);
   rotor::RotorInflow exchange(const lrm::InflowRequest& request) override;
   void set_timeout(double seconds) { timeout_s_ = seconds; }
+  // Ends a wait in progress and every later one with LinkLost (the nodelet is being unloaded).
+  void cancel();
   double last_wait_s() const { return last_wait_s_; }  // wall-clock wait of the last answered request
 
  private:
@@ -33,7 +35,7 @@ class RosInflowLink final : public lrm::InflowLink {
   std::mutex mutex_;
   std::condition_variable answered_;
   long waiting_for_ = -1;
-  bool have_answer_ = false;
+  bool have_answer_ = false, cancelled_ = false;
   ship_lrm::RotorInflow answer_;
 };
 
