@@ -23,7 +23,6 @@ void ApproachFluid::place(double table_time, const DomainPose& pose) {
   if (feed_ && feed_->apply(lrm_.domain(), table_time, pose)) ++face_refreshes_;
   placed_ = true;
   placed_time_ = table_time;
-  pose_ = pose;
 }
 
 rotor::RotorInflow ApproachFluid::serve(const InflowRequest& request) {

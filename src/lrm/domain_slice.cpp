@@ -14,14 +14,13 @@ DomainSlice domain_slice(LrmDomain& domain, int normal) {
   const int n[3] = {lat.nx(), lat.ny(), lat.nz()};
   const int a = (normal + 1) % 3, b = (normal + 2) % 3;
   // the hub's layer: the cell whose centre is nearest to the hub along the normal
-  int ijk0[3] = {0, 0, 0};
   const Vec3 origin = domain.position(0, 0, 0);
   const int layer = static_cast<int>(std::lround(-origin[normal] / domain.units().dx()));
   std::vector<std::uint32_t> cells;
   DomainSlice s;
   for (int v = 0; v < n[b]; ++v)
     for (int u = 0; u < n[a]; ++u) {
-      int ijk[3] = {ijk0[0], ijk0[1], ijk0[2]};
+      int ijk[3];
       ijk[normal] = layer;
       ijk[a] = u;
       ijk[b] = v;

@@ -108,9 +108,10 @@ Mat3 ned_axes_in_enu() {
   r << 0, 1, 0, 1, 0, 0, 0, 0, -1;
   return r;
 }
-// the axes of FLU in FRD: a half turn about x
-Mat3 flu_axes_in_frd() { return Eigen::Vector3d(1, -1, -1).asDiagonal(); }
 }  // namespace
+
+Mat3 flu_axes_in_frd() { return Eigen::Vector3d(1, -1, -1).asDiagonal(); }
+Vec3 frd_to_flu(const Vec3& v) { return flu_axes_in_frd() * v; }
 
 geometry_msgs::Transform world_to_ned() { return transform(Vec3::Zero(), Eigen::Quaterniond(ned_axes_in_enu())); }
 geometry_msgs::Transform frd_to_flu() { return transform(Vec3::Zero(), Eigen::Quaterniond(flu_axes_in_frd())); }

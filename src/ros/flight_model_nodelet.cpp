@@ -47,7 +47,6 @@ class FlightModelNodelet : public nodelet::Nodelet {
       pnh.param("output_interval", output_interval_, 0.01);
       pnh.param("tf_interval", tf_interval_, 0.02);
       pnh.param("clock_offset", clock_offset_, 1.0);
-      pnh.param("shutdown_when_done", shutdown_when_done_, true);
       pnh.param("wait_for_loads_subscribers", wait_for_subscribers_, 0);
       std::string config;
       pnh.param<std::string>("helicopter_config", config, "");
@@ -152,7 +151,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
     fixed[1].transform = frd_to_flu();
     // main_rotor: the thesis' mr frame at the hub, as its FLU twin (x forward, y port, z up the shaft)
     const auto& heli = approach_->helicopter();
-    const Eigen::Matrix3d mr_flu = heli.mr_to_body() * Eigen::Vector3d(1, -1, -1).asDiagonal();
+    const Eigen::Matrix3d mr_flu = heli.mr_to_body() * flu_axes_in_frd();
     fixed[2].header.frame_id = "base_link_frd";
     fixed[2].child_frame_id = "main_rotor";
     fixed[2].transform = transform(heli.parameters().main_rotor.hub_position, Eigen::Quaterniond(mr_flu));
@@ -165,8 +164,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
     const ros::Time now = stamp(s.time);
     const double eps = 0.5 * approach_->time_step();
     if (first || s.time >= next_output_ - eps) {
-      next_output_ += first ? 0.0 : output_interval_;  // on the grid of `ship_lrm approach --output-interval`
-      if (first) next_output_ = output_interval_;
+      next_output_ = first ? output_interval_ : next_output_ + output_interval_;  // the grid of `ship_lrm approach`
       ship_lrm::RotorLoads m;
       m.header.stamp = now;
       m.header.frame_id = "main_rotor";
@@ -188,8 +186,8 @@ class FlightModelNodelet : public nodelet::Nodelet {
       const auto& o = approach_->helicopter().outputs();
       geometry_msgs::WrenchStamped w;
       w.header = m.header;
-      w.wrench.force = to_msg(Eigen::Vector3d(o.rotor.aero_force.x(), -o.rotor.aero_force.y(), -o.rotor.aero_force.z()));
-      w.wrench.torque = to_msg(Eigen::Vector3d(o.rotor.aero_moment.x(), -o.rotor.aero_moment.y(), -o.rotor.aero_moment.z()));
+      w.wrench.force = to_msg(frd_to_flu(o.rotor.aero_force));
+      w.wrench.torque = to_msg(frd_to_flu(o.rotor.aero_moment));
       wrench_.publish(w);
     }
     if (first || s.time >= next_tf_ - eps) {
@@ -214,9 +212,8 @@ class FlightModelNodelet : public nodelet::Nodelet {
       od.pose.pose.orientation.y = q.y();
       od.pose.pose.orientation.z = q.z();
       od.pose.pose.orientation.w = q.w();
-      const Eigen::Vector3d flu(1, -1, -1);  // body FRD -> FLU
-      od.twist.twist.linear = to_msg(flu.cwiseProduct(b.velocity));
-      od.twist.twist.angular = to_msg(flu.cwiseProduct(b.rate));
+      od.twist.twist.linear = to_msg(frd_to_flu(b.velocity));
+      od.twist.twist.angular = to_msg(frd_to_flu(b.rate));
       odom_.publish(od);
       diagnostics_.update();
     }
@@ -250,7 +247,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
 
   lrm::ApproachConfig cfg_;
   flight::HelicopterParameters params_;
-  bool realtime_ = false, shutdown_when_done_ = true, reported_lost_ = false;
+  bool realtime_ = false, reported_lost_ = false;
   double lrm_timeout_ = 30, connect_timeout_ = 60, output_interval_ = 0.01, tf_interval_ = 0.02, clock_offset_ = 1.0;
   double next_output_ = 0, next_tf_ = 0, step_wall_s_ = 0;
   long steps_ = 0, deadline_misses_ = 0;

@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "ship_lrm/flight/parameters.hpp"
 #include "ship_lrm/lrm/approach.hpp"
+#include "ship_lrm/wake/wake_precompute.hpp"
 
 namespace ship_lrm::tools {
 namespace fs = std::filesystem;
@@ -74,7 +75,7 @@ std::function<int()> add_approach_command(CLI::App& app) {
     cfg.wake = !o->no_wake;
     cfg.fuselage = !o->no_fuselage;
     if (cfg.table.empty()) {
-      cfg.table = default_wake_table();
+      cfg.table = wake::default_table_path();
       if (!fs::exists(cfg.table))
         throw lbm::ConfigError("the default wake table " + cfg.table +
                                " does not exist yet; make it with `ship_lrm wake --preset default`");

@@ -28,8 +28,6 @@ void progress_bar(const wake::PrecomputeOptions::Progress& p) {
 
 }  // namespace
 
-std::string default_wake_table() { return wake::default_table_path(); }
-
 std::function<int()> add_wake_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("wake", "Precompute a ship air wake into a wake table (HDF5 + XDMF), with centre-plane statistics");
   auto opt = std::make_shared<wake::PrecomputeOptions>();
@@ -76,7 +74,7 @@ std::function<int()> add_wake_command(CLI::App& app) {
       if (!given("--duration")) o.duration = p.duration;
       if (!given("--interval")) o.frame_interval = p.frame_interval;
       o.half_precision = p.half_precision;
-      if (o.out.empty() && *preset == "default") o.out = default_wake_table();
+      if (o.out.empty() && *preset == "default") o.out = wake::default_table_path();
     }
     if (o.out.empty()) throw CLI::ValidationError("--out", "give the table file (FILE.h5)");
     o.domain.density = o.scale == "model" ? 1.225 : 1.1934;  // thesis tables 6.2, 6.3
@@ -85,7 +83,7 @@ std::function<int()> add_wake_command(CLI::App& app) {
     const std::string ckpt = o.out + ".ckpt";
     o.resume = !(*flags)[1];
     if (fs::exists(o.out) && !(o.resume && fs::exists(ckpt)) && !(*flags)[0]) {
-      if (!preset->empty() && *preset == "default" && o.out == default_wake_table()) {
+      if (!preset->empty() && *preset == "default" && o.out == wake::default_table_path()) {
         // the cache is ours: reuse it when complete, else make it again
         const int expected = static_cast<int>(std::floor(o.duration / o.frame_interval + 1e-9)) + 1;
         int frames = 0;

@@ -21,7 +21,6 @@ std::function<int()> add_sweep_command(CLI::App& app);
 std::function<int()> add_wake_command(CLI::App& app);
 std::function<int()> add_approach_command(CLI::App& app);
 // Where `ship_lrm wake --preset default` keeps its table: $SHIP_LRM_WAKE_CACHE or ~/.cache/ship_lrm.
-std::string default_wake_table();
 
 // Shared by the sweep commands (cmd_flight.cpp):
 // "0:5:70" (start:step:stop) or "0,10,25" in 0..100 m/s; CLI::ValidationError otherwise.

@@ -2,6 +2,7 @@
 // a fluid side that stops answering makes the flight model fall back to Pitt-Peters, no crash).
 #include <gtest/gtest.h>
 
+#include "lrm_test_config.hpp"
 #include "ship_lrm/lrm/inflow_link.hpp"
 
 using namespace ship_lrm;
@@ -9,17 +10,7 @@ using rotor::Vec3;
 
 namespace {
 
-rotor::RotorDiskState state_at(int k, double dt) {
-  rotor::RotorDiskState s;
-  s.time = k * dt;
-  s.radius = 4.92;
-  s.rotor_speed = 44.4;
-  s.density = 1.1934;
-  s.hub_velocity = Vec3(20.0, 0.0, 0.5);
-  s.aero_force = Vec3(0, 0, -24525.0 - 2000.0 * std::sin(0.05 * k));
-  s.harmonics.cos[0] = s.aero_force;
-  return s;
-}
+rotor::RotorDiskState state_at(int k, double dt) { return lrm::test::disk_state_at(k, dt); }
 
 // Answers `answers` requests with an inflow that encodes the request, then is gone.
 class FailingLink final : public lrm::InflowLink {

@@ -13,17 +13,7 @@ namespace {
 
 lrm::LrmConfig tiny_config() { return lrm::test::quick_config(16, 1.0); }
 
-rotor::RotorDiskState state_at(int k, double dt) {
-  rotor::RotorDiskState s;
-  s.time = k * dt;
-  s.radius = 4.92;
-  s.rotor_speed = 44.4;
-  s.density = 1.1934;
-  s.hub_velocity = Vec3(20.0 + 0.5 * std::sin(0.1 * k), 0.0, 0.5);
-  s.aero_force = Vec3(0, 0, -24525.0 - 2000.0 * std::sin(0.05 * k));
-  s.harmonics.cos[0] = s.aero_force;
-  return s;
-}
+rotor::RotorDiskState state_at(int k, double dt) { return lrm::test::disk_state_at(k, dt); }
 
 }  // namespace
 

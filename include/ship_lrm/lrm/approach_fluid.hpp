@@ -25,8 +25,6 @@ class ApproachFluid {
   rotor::RotorInflow serve(const InflowRequest& request);
 
   LrmDomain& domain() { return lrm_.domain(); }
-  const LrmInflow& lrm() const { return lrm_; }
-  const DomainPose& pose() const { return pose_; }  // of the last placement
   std::size_t voxelisations() const { return walls_ ? walls_->voxelisations() : 0; }
   std::size_t face_refreshes() const { return face_refreshes_; }
 
@@ -37,7 +35,6 @@ class ApproachFluid {
   std::unique_ptr<WakeFaceFeed> feed_;
   bool placed_ = false;
   double placed_time_ = 0;
-  DomainPose pose_;
   std::size_t face_refreshes_ = 0;
 };
 

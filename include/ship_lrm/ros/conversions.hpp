@@ -33,6 +33,9 @@ geometry_msgs::Transform transform(const Vec3& origin, const Eigen::Quaterniond&
 // world (ENU) -> world_ned, and an FRD frame -> its FLU twin (both fixed)
 geometry_msgs::Transform world_to_ned();
 geometry_msgs::Transform frd_to_flu();
+// The FLU twin's axes in its FRD frame (a half turn about x), and a vector's FLU components
+Mat3 flu_axes_in_frd();
+Vec3 frd_to_flu(const Vec3& v);
 // A vector in world_ned (NED) axes expressed in world (ENU) axes, and the same for a rotation
 Vec3 ned_to_enu(const Vec3& v);
 Eigen::Quaterniond ned_to_enu(const Eigen::Quaterniond& q_body_to_ned);  // body FRD -> ENU becomes body FLU -> ENU
