@@ -1,13 +1,17 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Rotor loads of a ship approach (thesis 9.2): time series of Delta C_T, C_Mx, C_My against their
 values at the end of the start-up (fig. 9.4), their amplitude over time and frequency from a
 continuous wavelet transform with complex Morlet wavelets of centre frequency and bandwidth 1 Hz
 (pywt 'cmor1.0-1.0', fig. 9.5), and a summary CSV.
 
     analyze_approach.py approach.csv --out DIR [--startup 5]
+    analyze_approach.py approach.bag --out DIR [--startup 5] [--topic /rotor/loads]
 
 Input: the CSV of `ship_lrm approach` (columns time_s, CT, CMx, CMy, distance_to_spot_m,
-height_above_deck_m). Output in DIR: approach.png, approach_wavelets.png, approach_summary.csv.
+height_above_deck_m, speed_m_s), or a rosbag recorded by `roslaunch ship_lrm approach.launch
+record:=true` (ship_lrm/RotorLoads on /rotor/loads; needs Debian's python3-rosbag). Output in DIR:
+approach.png, approach_wavelets.png, approach_summary.csv; from a bag also approach_loads.csv, the
+loads as a table (time_s, CT, CMx, CMy, ..., inflow_model, fallback).
 
 The wavelet amplitude is calibrated so that a sinusoid of amplitude A shows A at its frequency (the
 response to a unit sinusoid at one reference frequency, carried to every scale by the transform's
@@ -35,9 +39,63 @@ def read_csv(path):
     missing = [c for c in need if c not in rows[0]]
     if missing:
         sys.exit(f"analyze_approach: {path} lacks the columns {', '.join(missing)} (not a `ship_lrm approach` CSV?)")
-    data = {c: np.array([float(r[c]) for r in rows]) for c in need}
-    if not np.all(np.isfinite(data["time_s"])) or np.any(np.diff(data["time_s"]) <= 0):
+    try:
+        data = {c: np.array([float(r[c]) for r in rows]) for c in need}
+    except ValueError as e:
+        sys.exit(f"analyze_approach: {path}: {e}")
+    return check_times(data, path)
+
+
+BAG_COLUMNS = [("time_s", "time"), ("thrust_N", "thrust"), ("CT", "ct"), ("CMx", "cmx"), ("CMy", "cmy"),
+               ("main_power_W", "main_power"), ("distance_to_spot_m", "distance"),
+               ("height_above_deck_m", "height_above_deck"), ("speed_m_s", "speed")]
+
+
+def read_bag(path, topic, out_dir):
+    """The ship_lrm/RotorLoads of `topic` in a bag, in the CSV's column names; also written to
+    out_dir/approach_loads.csv (with the inflow model and the fallback flag of each sample)."""
+    try:
+        import rosbag
+    except ImportError:
+        sys.exit("analyze_approach: reading a bag needs Debian's python3-rosbag (scripts/setup.sh installs it); "
+                 "run with /usr/bin/python3")
+    try:
+        bag = rosbag.Bag(path)
+    except Exception as e:  # rosbag raises its own ROSBagException, ROSBagUnindexedException, IOError
+        sys.exit(f"analyze_approach: cannot read the bag {path}: {e}")
+    with bag:
+        info = bag.get_type_and_topic_info().topics
+        if topic not in info:
+            have = ", ".join(f"{t} ({i.msg_type})" for t, i in sorted(info.items())) or "nothing"
+            sys.exit(f"analyze_approach: {path} has no {topic}; it holds {have}")
+        if info[topic].msg_type != "ship_lrm/RotorLoads":
+            sys.exit(f"analyze_approach: {topic} in {path} is {info[topic].msg_type}, not ship_lrm/RotorLoads")
+        msgs = [m for _, m, _ in bag.read_messages(topics=[topic])]
+    if not msgs:
+        sys.exit(f"analyze_approach: {path} has no messages on {topic}")
+    msgs.sort(key=lambda m: m.time)
+    os.makedirs(out_dir, exist_ok=True)
+    with open(os.path.join(out_dir, "approach_loads.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow([c for c, _ in BAG_COLUMNS] + ["inflow_model", "fallback"])
+        for m in msgs:
+            w.writerow([repr(float(getattr(m, a))) for _, a in BAG_COLUMNS] + [m.inflow_model, int(m.fallback)])
+    data = {c: np.array([float(getattr(m, a)) for m in msgs]) for c, a in BAG_COLUMNS}
+    fallback = [m.time for m in msgs if m.fallback]
+    if fallback:
+        print(f"analyze_approach: warning: the LRM was lost at t = {fallback[0]:g} s; Pitt-Peters served from there",
+              file=sys.stderr)
+    return check_times(data, path)
+
+
+def check_times(data, path):
+    t = data["time_s"]
+    if not np.all(np.isfinite(t)) or np.any(np.diff(t) <= 0):
         sys.exit(f"analyze_approach: {path}: time_s must increase strictly")
+    for c, _ in COEFFS:
+        if not np.all(np.isfinite(data[c])):
+            bad = t[~np.isfinite(data[c])][0]
+            sys.exit(f"analyze_approach: {path}: {c} is not finite from t = {bad:g} s")
     return data
 
 
@@ -75,13 +133,16 @@ def wavelet_amplitude(y, dt, freqs):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("csv")
+    ap.add_argument("input", help="approach.csv of `ship_lrm approach`, or a bag of approach.launch record:=true")
     ap.add_argument("--out", required=True)
     ap.add_argument("--startup", type=float, default=5.0, help="s: the Delta is taken against this time (thesis 9.2)")
+    ap.add_argument("--topic", default="/rotor/loads", help="bag input: the ship_lrm/RotorLoads topic")
     a = ap.parse_args()
-    if a.csv.endswith(".bag"):
-        sys.exit("analyze_approach: bags come with the ROS layer (issue 6); give the CSV of `ship_lrm approach`")
-    d = read_csv(a.csv)
+    if not os.path.isfile(a.input):
+        sys.exit(f"analyze_approach: {a.input} does not exist")
+    with open(a.input, "rb") as f:
+        is_bag = f.read(13) == b"#ROSBAG V2.0\n"
+    d = read_bag(a.input, a.topic, a.out) if is_bag else read_csv(a.input)
     t = d["time_s"]
     if a.startup >= t[-1]:
         sys.exit(f"analyze_approach: the start-up {a.startup} s is not before the end of the series ({t[-1]} s)")
@@ -160,7 +221,8 @@ def main():
                 x = delta[c][sel]
                 w.writerow([c, f"{d[c][k0]:.6g}", name, f"{lo:g}", f"{min(hi, t[-1]):g}", f"{x.mean():.4g}", f"{x.std():.4g}",
                             f"{x.min():.4g}", f"{x.max():.4g}", f"{wav[0]:.4g}", f"{wav[1]:.4g}"])
-    print("wrote", ", ".join(os.path.join(a.out, n) for n in ["approach.png", "approach_wavelets.png", "approach_summary.csv"]))
+    names = ["approach.png", "approach_wavelets.png", "approach_summary.csv"] + (["approach_loads.csv"] if is_bag else [])
+    print("wrote", ", ".join(os.path.join(a.out, n) for n in names))
 
 
 if __name__ == "__main__":

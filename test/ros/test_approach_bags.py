@@ -1,0 +1,84 @@
+#!/usr/bin/python3
+"""Issue 6 acceptance 2 and 6: two simulated-time runs of approach.launch with record:=true, each on its
+own ROS master, give bags whose rotor loads are identical in every field and every sample; the analysis
+script turns such a bag into its plots, its summary and the loads as CSV, matching the bag.
+
+    test_approach_bags.py TINY_TABLE.h5 WORK_DIR    (run through the workspace's devel/env.sh)"""
+import csv
+import os
+import shutil
+import socket
+import subprocess
+import sys
+
+import rosbag
+
+N, DURATION, STARTUP = "16", 1.0, 0.2
+FIELDS = ["time", "thrust", "ct", "cmx", "cmy", "main_power", "distance", "height_above_deck", "speed", "inflow_model", "fallback"]
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("localhost", 0))
+        return s.getsockname()[1]
+
+
+def run_launch(table, bag, log):
+    port = free_port()
+    env = dict(os.environ, ROS_MASTER_URI=f"http://localhost:{port}")
+    args = ["roslaunch", "-p", str(port), "ship_lrm", "approach.launch", f"wake_file:={table}", "backend:=cpu", f"N:={N}",
+            f"duration:={DURATION}", f"startup:={STARTUP}", "start_distance:=10", "height:=5", "record:=true", f"bag:={bag}"]
+    with open(log, "w") as f:
+        rc = subprocess.run(args, env=env, stdout=f, stderr=subprocess.STDOUT, timeout=300).returncode
+    if rc != 0 or not os.path.isfile(bag):
+        sys.exit(f"FAILED: {' '.join(args)} exited with {rc} (log {log})")
+
+
+def loads(bag):
+    with rosbag.Bag(bag) as b:
+        return [tuple(getattr(m, f) for f in FIELDS) for _, m, _ in b.read_messages(topics=["/rotor/loads"])]
+
+
+def main():
+    table, work = sys.argv[1], sys.argv[2]
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    bags = [os.path.join(work, f"run{i}.bag") for i in (1, 2)]
+    for i, bag in enumerate(bags):
+        run_launch(table, bag, os.path.join(work, f"run{i + 1}.log"))
+    a, b = loads(bags[0]), loads(bags[1])
+    failures = []
+    expected = int(round(DURATION / 0.01)) + 1  # t = 0, 0.01, ..., 1.0: the recorder saw every sample
+    if len(a) != expected or len(b) != expected:
+        failures.append(f"{len(a)} and {len(b)} loads in the bags, expected {expected} each")
+    diff = [(x[0], f) for x, y in zip(a, b) for f, u, v in zip(FIELDS, x, y) if u != v]
+    if diff:
+        failures.append(f"{len(diff)} fields differ between the runs, first {diff[0][1]} at t = {diff[0][0]:g} s")
+    if any(x[-2] != "lrm" or x[-1] for x in a):
+        failures.append("not every load came from the LRM")
+
+    out = os.path.join(work, "analysis")
+    here = os.path.dirname(os.path.abspath(__file__))
+    script = os.path.join(here, "..", "..", "scripts", "analyze_approach.py")
+    subprocess.run(["/usr/bin/python3", script, bags[0], "--out", out, "--startup", str(STARTUP)], check=True)
+    for name in ["approach.png", "approach_wavelets.png", "approach_summary.csv", "approach_loads.csv"]:
+        p = os.path.join(out, name)
+        if not (os.path.isfile(p) and os.path.getsize(p) > 0):
+            failures.append(f"the analysis did not write {name}")
+    with open(os.path.join(out, "approach_loads.csv")) as f:
+        rows = list(csv.DictReader(f))
+    if [float(r["CT"]) for r in rows] != [x[2] for x in a]:
+        failures.append("approach_loads.csv does not hold the bag's C_T exactly")
+    with open(os.path.join(out, "approach_summary.csv")) as f:
+        summary = list(csv.DictReader(f))
+    k0 = next(i for i, x in enumerate(a) if x[0] >= STARTUP)
+    ct = [r for r in summary if r["coefficient"] == "CT" and r["phase"] == "start-up"]
+    if not ct or abs(float(ct[0]["value_at_startup"]) - a[k0][2]) > 1e-6 * abs(a[k0][2]):
+        failures.append("the summary's C_T at the start-up is not the bag's")
+    if failures:
+        sys.exit("FAILED: " + "; ".join(failures))
+    print(f"two runs: {len(a)} identical loads; analysis written to {out}")
+
+
+if __name__ == "__main__":
+    main()
