@@ -7,7 +7,8 @@
 
 namespace ship_lrm::lrm {
 
-ShipApproach::ShipApproach(const ApproachConfig& cfg, const flight::HelicopterParameters& params, std::shared_ptr<InflowLink> link)
+ShipApproach::ShipApproach(const ApproachConfig& cfg, const flight::HelicopterParameters& params, std::shared_ptr<InflowLink> link,
+                           std::optional<RealTimeMode> realtime)
     : cfg_(cfg) {
   table_ = open_approach_table(cfg_);  // validates cfg_
   const wake::WakeTableInfo& info = table_->info();
@@ -41,6 +42,13 @@ ShipApproach::ShipApproach(const ApproachConfig& cfg, const flight::HelicopterPa
     });
     linked_ = model.get();
     inflow = std::move(model);
+    if (realtime) {
+      // the LRM's own step sets the pipeline's lag; the budget is replaced by each step's deadline
+      const double lbm_dt = lattice_units(approach_lrm_config(cfg_, params, table_->info())).dt();
+      auto rt = std::make_unique<RealTimeInflow>(std::move(inflow), lbm_dt, 1.0, *realtime);
+      realtime_ = rt.get();
+      inflow = std::move(rt);
+    }
   }
   heli_ = std::make_unique<flight::Helicopter>(params, std::move(inflow));
   heli_->set_controls(trim_.controls);
@@ -66,8 +74,9 @@ void ShipApproach::place(double t, bool start) {
   body.position = pose.hub - attitude_ * heli_->parameters().main_rotor.hub_position;
   body.attitude = attitude_;
   body.velocity = attitude_.conjugate() * pose.hub_velocity;
-  if (fluid_) {
-    fluid_->place(table_time(t), pose);  // a linked fluid side places itself when the next request comes
+  if (fluid_ && !realtime_) {
+    // (a linked fluid side, and one in the real-time LRM thread, places itself when the next request comes)
+    fluid_->place(table_time(t), pose);
   } else if (!linked_ && cfg_.wake) {
     // Pitt-Peters: the wake's air at the hub is the wind the whole helicopter flies in
     hub_xyz_.assign(pose.hub.data(), pose.hub.data() + 3);
@@ -112,7 +121,7 @@ void ShipApproach::record() {
   s.cmy = o.rotor.aero_moment.y() / (q * R);
   s.main_power = o.main_power;
   s.inflow_mean = o.inflow.mean;
-  if (fluid_) {
+  if (fluid_ && !realtime_) {  // (in real time the LRM thread owns the domain)
     s.wall_cells = fluid_->domain().wall_cells();
     s.voxelisations = fluid_->voxelisations();
     s.face_refreshes = fluid_->face_refreshes();

@@ -46,6 +46,8 @@ LrmConfig config_for_stream(LrmConfig cfg, double fastest_stream) {
   return cfg;
 }
 
+lbm::UnitConverter lattice_units(const LrmConfig& cfg) { return lbm::UnitConverter(unit_reference(cfg)); }
+
 LrmDomain::LrmDomain(const LrmConfig& cfg)
     : cfg_(cfg),
       units_(unit_reference(cfg)),

@@ -16,8 +16,8 @@ void LinkedInflow::exchange(InflowRequest& request) {
       served_ = link_->exchange(request);
       return;
     } catch (const LinkLost& e) {
-      lost_ = true;
       lost_reason_ = e.what();
+      lost_.store(true, std::memory_order_release);
     }
   }
   ++fallback_calls_;

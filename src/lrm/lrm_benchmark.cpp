@@ -90,19 +90,20 @@ LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, cons
 
 LrmBenchmarkResult run_realtime_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg_in, double seconds, double speed,
                                           double warm_up, RealTimeMode mode) {
-  auto [heli_ptr, rt] = trimmed_helicopter<RealTimeLrmInflow>(
-      p, cfg_in, seconds, speed, [&](const LrmConfig& c) { return std::make_unique<RealTimeLrmInflow>(c, warm_up, 1.0, mode); });
+  auto [heli_ptr, rt] = trimmed_helicopter<RealTimeInflow>(p, cfg_in, seconds, speed,
+                                                           [&](const LrmConfig& c) { return make_realtime_lrm(c, warm_up, 1.0, mode); });
+  LrmInflow& lrm = static_cast<LrmInflow&>(rt->slow());
   flight::Helicopter& heli = *heli_ptr;
   const LrmConfig& cfg = cfg_in;
   LrmBenchmarkResult r;
   r.realtime = true;
   r.pipelined = mode == RealTimeMode::Pipelined;
-  r.backend = rt->lrm().domain().solver().backend_name();
+  r.backend = lrm.domain().solver().backend_name();
   r.nodes = cfg.nodes;
   r.reach = cfg.reach;
-  r.cells_per_edge = rt->lrm().domain().cells_per_edge();
-  r.cells = static_cast<long>(rt->lrm().domain().solver().lattice().cells());
-  const long lbm0 = rt->lrm().lbm_steps();
+  r.cells_per_edge = lrm.domain().cells_per_edge();
+  r.cells = static_cast<long>(lrm.domain().solver().lattice().cells());
+  const long lbm0 = lrm.lbm_steps();
   const long steps = static_cast<long>(std::ceil(seconds / heli.time_step()));
   using clock = std::chrono::steady_clock;
   const auto dt = std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(heli.time_step()));
@@ -124,7 +125,7 @@ LrmBenchmarkResult run_realtime_benchmark(const flight::HelicopterParameters& p,
   r.miss_fraction = st.miss_fraction();
   r.worst_wait_s = st.worst_wait_s;
   rt->reset(heli.disk_state());  // waits for the LRM thread, so its step count is final
-  r.lbm_steps = rt->lrm().lbm_steps() - lbm0;
+  r.lbm_steps = lrm.lbm_steps() - lbm0;
   r.mlups = static_cast<double>(r.cells) * r.lbm_steps / r.wall_seconds / 1e6;
   return r;
 }

@@ -6,13 +6,21 @@
 
 namespace ship_lrm::lrm {
 
-RealTimeLrmInflow::RealTimeLrmInflow(const LrmConfig& cfg, double warm_up, double budget, RealTimeMode mode)
-    : lrm_(std::make_unique<LrmInflow>(cfg, warm_up)), mode_(mode), budget_(budget) {
-  if (!(budget > 0)) throw lbm::ConfigError("real-time LRM: the deadline budget must be > 0 s");
+RealTimeInflow::RealTimeInflow(std::unique_ptr<rotor::InflowModel> slow, double interval, double budget, RealTimeMode mode)
+    : slow_(std::move(slow)), interval_(interval), mode_(mode), budget_(budget) {
+  if (!slow_) throw lbm::ConfigError("real-time inflow: no model to run");
+  if (!(budget > 0)) throw lbm::ConfigError("real-time inflow: the deadline budget must be > 0 s");
+  if (!(interval > 0)) throw lbm::ConfigError("real-time inflow: the slow model's interval must be > 0 s");
   thread_ = std::thread([this] { worker(); });
 }
 
-RealTimeLrmInflow::~RealTimeLrmInflow() {
+std::unique_ptr<RealTimeInflow> make_realtime_lrm(const LrmConfig& cfg, double warm_up, double budget, RealTimeMode mode) {
+  auto lrm = std::make_unique<LrmInflow>(cfg, warm_up);
+  const double interval = lrm->domain().time_step();
+  return std::make_unique<RealTimeInflow>(std::move(lrm), interval, budget, mode);
+}
+
+RealTimeInflow::~RealTimeInflow() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     stop_ = true;
@@ -21,7 +29,7 @@ RealTimeLrmInflow::~RealTimeLrmInflow() {
   thread_.join();
 }
 
-void RealTimeLrmInflow::worker() {
+void RealTimeInflow::worker() {
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
     job_ready_.wait(lock, [this] { return stop_ || has_job_; });
@@ -35,8 +43,8 @@ void RealTimeLrmInflow::worker() {
     rotor::RotorInflow out;
     std::exception_ptr err;
     try {
-      lrm_->advance(state, dt);
-      out = lrm_->inflow();
+      slow_->advance(state, dt);
+      out = slow_->inflow();
     } catch (...) {
       err = std::current_exception();
     }
@@ -52,25 +60,24 @@ void RealTimeLrmInflow::worker() {
   }
 }
 
-RealTimeStats RealTimeLrmInflow::stats() const {
+RealTimeStats RealTimeInflow::stats() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return stats_;
 }
 
-void RealTimeLrmInflow::reset(const rotor::RotorDiskState& state) {
+void RealTimeInflow::reset(const rotor::RotorDiskState& state) {
   std::unique_lock<std::mutex> lock(mutex_);
   result_ready_.wait(lock, [this] { return !busy_ && !has_job_; });  // the LRM thread is idle
-  lrm_->reset(state);
+  slow_->reset(state);
   fallback_.reset(state);
-  served_ = lrm_->inflow();
+  served_ = slow_->inflow();
   last_lrm_ = served_;
   have_lrm_ = true;
   in_flight_ = false;
   pending_dt_ = 0;
-  lbm_dt_ = lrm_->domain().time_step();
 }
 
-void RealTimeLrmInflow::advance(const rotor::RotorDiskState& state, double dt) {
+void RealTimeInflow::advance(const rotor::RotorDiskState& state, double dt) {
   fallback_.advance(state, dt);  // always current, whatever the LRM thread does
   std::unique_lock<std::mutex> lock(mutex_);
   ++stats_.steps;
@@ -82,7 +89,7 @@ void RealTimeLrmInflow::advance(const rotor::RotorDiskState& state, double dt) {
     advance_pipelined(lock, state, dt);
 }
 
-long RealTimeLrmInflow::post(const rotor::RotorDiskState& state) {
+long RealTimeInflow::post(const rotor::RotorDiskState& state) {
   const long id = ++job_id_;
   job_state_ = state;
   job_dt_ = pending_dt_;
@@ -92,7 +99,7 @@ long RealTimeLrmInflow::post(const rotor::RotorDiskState& state) {
   return id;
 }
 
-bool RealTimeLrmInflow::collect(std::unique_lock<std::mutex>& lock, long id, std::chrono::steady_clock::time_point deadline) {
+bool RealTimeInflow::collect(std::unique_lock<std::mutex>& lock, long id, std::chrono::steady_clock::time_point deadline) {
   result_ready_.wait_until(lock, deadline, [&] { return result_id_ == id || error_ != nullptr; });
   if (error_) std::rethrow_exception(error_);
   // Judged by when the LRM thread finished, not by when this thread woke up: a waiter woken late by
@@ -100,12 +107,12 @@ bool RealTimeLrmInflow::collect(std::unique_lock<std::mutex>& lock, long id, std
   return result_id_ == id && result_time_ <= deadline;
 }
 
-std::chrono::steady_clock::time_point RealTimeLrmInflow::deadline_after(std::chrono::steady_clock::time_point posted, int steps) const {
+std::chrono::steady_clock::time_point RealTimeInflow::deadline_after(std::chrono::steady_clock::time_point posted, int steps) const {
   if (deadline_ != std::chrono::steady_clock::time_point{}) return deadline_;  // paced: this step's due time
   return posted + std::chrono::duration_cast<std::chrono::steady_clock::duration>(budget_ * steps);
 }
 
-void RealTimeLrmInflow::advance_lockstep(std::unique_lock<std::mutex>& lock, const rotor::RotorDiskState& state) {
+void RealTimeInflow::advance_lockstep(std::unique_lock<std::mutex>& lock, const rotor::RotorDiskState& state) {
   if (busy_ || has_job_) {  // still working on an earlier step: this one cannot make it
     ++stats_.deadline_misses;
     stats_.last_was_fallback = true;
@@ -125,8 +132,8 @@ void RealTimeLrmInflow::advance_lockstep(std::unique_lock<std::mutex>& lock, con
   }
 }
 
-void RealTimeLrmInflow::advance_pipelined(std::unique_lock<std::mutex>& lock, const rotor::RotorDiskState& state, double dt) {
-  lag_steps_ = std::max(1, static_cast<int>(std::lround(lbm_dt_ / dt)));
+void RealTimeInflow::advance_pipelined(std::unique_lock<std::mutex>& lock, const rotor::RotorDiskState& state, double dt) {
+  lag_steps_ = std::max(1, static_cast<int>(std::lround(interval_ / dt)));
   if (in_flight_ && stats_.steps >= due_step_) {
     const auto t = std::chrono::steady_clock::now();
     in_flight_ = false;

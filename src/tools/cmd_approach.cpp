@@ -7,10 +7,12 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 #include "commands.hpp"
 #include "ship_lrm/flight/parameters.hpp"
 #include "ship_lrm/lrm/approach.hpp"
+#include "ship_lrm/lrm/wall_clock_pacer.hpp"
 #include "ship_lrm/wake/wake_precompute.hpp"
 
 namespace ship_lrm::tools {
@@ -38,6 +40,7 @@ std::function<int()> add_approach_command(CLI::App& app) {
     std::string out, config, backend = "auto";
     double output_interval = 0.01;
     bool overwrite = false, no_plot = false, no_ship = false, no_wake = false, no_fuselage = false;
+    bool realtime = false, pipelined = false;
   };
   auto o = std::make_shared<Opts>();
   o->cfg.lrm.nodes = 32;
@@ -67,6 +70,10 @@ std::function<int()> add_approach_command(CLI::App& app) {
   cmd->add_option("--config", o->config, "helicopter parameter file (default: the shipped config/bo105.yaml)");
   cmd->add_flag("--overwrite", o->overwrite, "replace existing output files");
   cmd->add_flag("--no-plot", o->no_plot, "write the CSV only");
+  cmd->add_flag("--realtime", o->realtime,
+                "lrm: pace to the wall clock; the LRM runs in its own thread and a step whose inflow misses its deadline "
+                "flies on Pitt-Peters (counted; not deterministic)");
+  cmd->add_flag("--pipelined", o->pipelined, "with --realtime: the LRM one LBM step behind the flight model (more time per LBM step)");
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
     lrm::ApproachConfig cfg = o->cfg;
@@ -85,11 +92,15 @@ std::function<int()> add_approach_command(CLI::App& app) {
                              "or `ship_lrm wake --preset default --out " +
                              cfg.table + "`");
     }
+    if (o->pipelined && !o->realtime) throw lbm::ConfigError("--pipelined needs --realtime");
+    if (o->realtime && cfg.inflow != "lrm") throw lbm::ConfigError("--realtime needs --inflow lrm (Pitt-Peters has no deadlines to meet)");
     const fs::path dir(o->out);
     prepare_output(dir, {"approach.csv", "approach.png", "approach_wavelets.png", "approach_summary.csv"}, o->overwrite);
     const flight::HelicopterParameters p = o->config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(o->config);
     std::cout << "approach: trimming the Bo 105 (Pitt-Peters) for the fixed controls ...\n" << std::flush;
-    lrm::ShipApproach run(cfg, p);
+    std::optional<lrm::RealTimeMode> realtime;
+    if (o->realtime) realtime = o->pipelined ? lrm::RealTimeMode::Pipelined : lrm::RealTimeMode::LockStep;
+    lrm::ShipApproach run(cfg, p, nullptr, realtime);
     const auto& info = run.table_info();
     std::cout << "approach: ship " << info.ship << " (" << info.motion << "), wind " << -info.free_stream[0] << " m/s, trim at "
               << run.trim().controls.collective << " % collective, pitch " << run.trim().pitch * 180 / M_PI << " deg; inflow "
@@ -102,8 +113,11 @@ std::function<int()> add_approach_command(CLI::App& app) {
     write_header(csv);
     write_row(csv, run.sample());
     double next_row = o->output_interval, next_report = 2.0;
+    lrm::WallClockPacer pacer(run.time());
     while (!run.done()) {
+      if (o->realtime) run.set_deadline(pacer.due(run.time() + run.time_step()));
       run.step();
+      if (o->realtime) pacer.wait_until(run.time());
       const lrm::ApproachSample& s = run.sample();
       if (!std::isfinite(s.thrust))
         throw std::runtime_error("approach: the rotor loads are not finite at t = " + std::to_string(s.time) + " s");
@@ -114,17 +128,25 @@ std::function<int()> add_approach_command(CLI::App& app) {
       if (s.time >= next_report - 0.5 * run.time_step()) {
         std::cout << std::fixed << std::setprecision(1) << "  t = " << s.time << " s, " << s.distance << " m behind the spot, "
                   << s.height_above_deck << " m above the deck, C_T " << std::setprecision(5) << s.ct << ", LRM wall cells " << s.wall_cells
-                  << ", t_clock/t_sim " << std::setprecision(2) << run.wall_seconds() / s.time << "\n"
-                  << std::defaultfloat << std::flush;
+                  << ", t_clock/t_sim " << std::setprecision(2) << run.wall_seconds() / s.time;
+        if (const auto* rt = run.realtime_inflow())
+          std::cout << ", deadline misses " << rt->stats().deadline_misses << " of " << rt->stats().steps;
+        std::cout << "\n" << std::defaultfloat << std::flush;
         next_report += 2.0;
       }
     }
     csv.close();
-    std::cout << "wrote " << (dir / "approach.csv").string() << " (" << run.sample().time << " s simulated in " << run.wall_seconds()
-              << " s: t_clock/t_sim " << run.wall_seconds() / run.sample().time << ")\n";
+    std::cout << "wrote " << (dir / "approach.csv").string() << " (" << run.sample().time << " s simulated, " << run.wall_seconds()
+              << " s in the coupled step: t_clock/t_sim " << run.wall_seconds() / run.sample().time << ")\n";
+    if (const auto* rt = run.realtime_inflow()) {
+      const lrm::RealTimeStats st = rt->stats();
+      std::cout << "real time (" << (o->pipelined ? "pipelined" : "lock-step") << "): " << st.deadline_misses << " of " << st.steps
+                << " steps missed their inflow deadline (" << 100.0 * st.miss_fraction() << " %) and flew on Pitt-Peters; "
+                << pacer.overruns() << " steps ended after their due time\n";
+    }
     if (!o->no_plot) {
       const std::string script = flight::shipped_directory("SHIP_LRM_SCRIPTS_DIR", "scripts") + "/analyze_approach.py";
-      const std::string c = "/usr/bin/env python3 '" + script + "' '" + (dir / "approach.csv").string() + "' --out '" + dir.string() +
+      const std::string c = "/usr/bin/python3 '" + script + "' '" + (dir / "approach.csv").string() + "' --out '" + dir.string() +
                             "' --startup " + std::to_string(cfg.startup);
       if (std::system(c.c_str()) != 0)
         std::cerr << "ship_lrm: warning: the analysis failed (needs python3 with numpy, matplotlib and pywt); the CSV is complete\n";

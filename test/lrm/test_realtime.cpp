@@ -20,7 +20,8 @@ rotor::RotorDiskState state_at(int k, double dt) { return lrm::test::disk_state_
 TEST(RealTimeInflow, ResultsThatMakeTheirDeadlineAreTheSynchronousOnes) {
   const double dt = 0.0072;  // about one LBM step at N = 16 (7.2 ms) per coupling step
   lrm::LrmInflow sync(tiny_config(), 0.2);
-  lrm::RealTimeLrmInflow rt(tiny_config(), 0.2, 30.0);  // 30 s: no deadline can pass
+  auto rt_ptr = lrm::make_realtime_lrm(tiny_config(), 0.2, 30.0);
+  lrm::RealTimeInflow& rt = *rt_ptr;  // 30 s: no deadline can pass
   sync.reset(state_at(0, dt));
   rt.reset(state_at(0, dt));
   for (int k = 1; k <= 40; ++k) {
@@ -42,7 +43,8 @@ namespace {
 // Pitt-Peters', current at every step, and counted as a miss.
 void check_late_jobs_fall_back(lrm::RealTimeMode mode, double dt) {
   rotor::PittPetersInflow pp;
-  lrm::RealTimeLrmInflow rt(tiny_config(), 0.2, 1e-9, mode);  // no LRM job fits into a nanosecond
+  auto rt_ptr = lrm::make_realtime_lrm(tiny_config(), 0.2, 1e-9, mode);
+  lrm::RealTimeInflow& rt = *rt_ptr;  // no LRM job fits into a nanosecond
   pp.reset(state_at(0, dt));
   rt.reset(state_at(0, dt));
   const Vec3 lrm_start = rt.inflow().mean;
@@ -70,7 +72,8 @@ TEST(RealTimeInflow, LateResultsAreDroppedAndPittPetersServesThoseSteps) { check
 TEST(RealTimeInflow, PipelinedServesTheSynchronousInflowOneLbmIntervalLater) {
   const double dt = 0.0036;  // half the N = 16 lattice's 7.2 ms step
   lrm::LrmInflow ref(tiny_config(), 0.2);
-  lrm::RealTimeLrmInflow rt(tiny_config(), 0.2, 30.0, lrm::RealTimeMode::Pipelined);
+  auto rt_ptr = lrm::make_realtime_lrm(tiny_config(), 0.2, 30.0, lrm::RealTimeMode::Pipelined);
+  lrm::RealTimeInflow& rt = *rt_ptr;
   ref.reset(state_at(0, dt));
   rt.reset(state_at(0, dt));
   rotor::RotorInflow expected = ref.inflow(), next;
@@ -104,4 +107,4 @@ TEST(RealTimeInflow, PipelinedLateJobsAreDroppedAndPittPetersServesUntilOneIsOnT
   check_late_jobs_fall_back(lrm::RealTimeMode::Pipelined, 0.0036);
 }
 
-TEST(RealTimeInflow, BadBudgetIsRefused) { EXPECT_THROW(lrm::RealTimeLrmInflow(tiny_config(), 0.2, 0.0), lbm::ConfigError); }
+TEST(RealTimeInflow, BadBudgetIsRefused) { EXPECT_THROW(lrm::make_realtime_lrm(tiny_config(), 0.2, 0.0), lbm::ConfigError); }

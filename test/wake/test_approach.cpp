@@ -134,3 +134,36 @@ TEST(ShipApproach, TablesThatCannotServeAnApproachAreRefusedByName) {
     }
   }
 }
+
+// Real time (paced runs, issue 6): with a deadline no step can miss, the lock-step real-time approach
+// serves exactly the simulated-time LRM loads; with deadlines already past, every step is Pitt-Peters'
+// (counted as a miss), never a late LRM answer.
+TEST(ShipApproach, RealTimeOnTimeIsTheSimulatedRunAndLateStepsArePittPeters) {
+  lrm::ApproachConfig c = config("lrm", 0.1);
+  c.path.start_distance = 10.0;
+  c.path.height = 5.0;
+  const auto params = flight::load_default_bo105();
+  lrm::ShipApproach sim(c, params);
+  lrm::ShipApproach rt(c, params, nullptr, lrm::RealTimeMode::LockStep);
+  ASSERT_NE(rt.realtime_inflow(), nullptr);
+  const auto later = std::chrono::steady_clock::now() + std::chrono::hours(1);
+  while (!sim.done()) {
+    sim.step();
+    rt.set_deadline(later);
+    rt.step();
+    ASSERT_EQ(rt.sample().ct, sim.sample().ct) << "t = " << sim.time();
+    ASSERT_EQ(rt.sample().cmx, sim.sample().cmx) << "t = " << sim.time();
+  }
+  EXPECT_EQ(rt.realtime_inflow()->stats().deadline_misses, 0);
+
+  lrm::ShipApproach missed(c, params, nullptr, lrm::RealTimeMode::LockStep);
+  long steps = 0;
+  while (!missed.done()) {
+    missed.set_deadline(std::chrono::steady_clock::now() - std::chrono::seconds(1));
+    missed.step();
+    ++steps;
+    ASSERT_TRUE(missed.realtime_inflow()->stats().last_was_fallback) << "step " << steps;
+  }
+  EXPECT_EQ(missed.realtime_inflow()->stats().deadline_misses, steps);
+  EXPECT_GT(steps, 10);
+}

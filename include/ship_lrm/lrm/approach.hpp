@@ -11,7 +11,9 @@
 // x forward, y starboard, z down, origin at the hangar-door base), which serves as the flight model's
 // NED world; the undisturbed air (the table's free stream) is the flight model's wind.
 #pragma once
+#include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "ship_lrm/flight/helicopter.hpp"
@@ -19,6 +21,7 @@
 #include "ship_lrm/lrm/approach_config.hpp"
 #include "ship_lrm/lrm/approach_fluid.hpp"
 #include "ship_lrm/lrm/inflow_link.hpp"
+#include "ship_lrm/lrm/realtime_inflow.hpp"
 
 namespace ship_lrm::lrm {
 
@@ -44,8 +47,18 @@ class ShipApproach {
   // with Pitt-Peters. With LRM inflow the fluid side (approach_fluid.hpp) answers through `link`; no
   // link: an ApproachFluid in this process (the batch path). lbm::ConfigError or wake::TableError for
   // bad input: a table too short for the duration, a ship the table cannot name, a bad path, ...
-  ShipApproach(const ApproachConfig& cfg, const flight::HelicopterParameters& params, std::shared_ptr<InflowLink> link = nullptr);
+  // realtime: for runs paced to the wall clock, the LRM side runs in its own thread with firm
+  // deadlines (RealTimeInflow around the link; a late inflow is replaced by Pitt-Peters for that
+  // step); give each step its deadline with set_deadline(). Not deterministic; nullopt: simulated time.
+  ShipApproach(const ApproachConfig& cfg, const flight::HelicopterParameters& params, std::shared_ptr<InflowLink> link = nullptr,
+               std::optional<RealTimeMode> realtime = std::nullopt);
   void step();  // one coupling step
+  // Real time: the wall-clock time by which the next step's inflow must be there (no-op otherwise).
+  void set_deadline(std::chrono::steady_clock::time_point due) {
+    if (realtime_) realtime_->set_deadline(due);
+  }
+  // Real time: the deadline statistics, else nullptr.
+  const RealTimeInflow* realtime_inflow() const { return realtime_; }
   bool done() const;
   double time() const { return heli_->time(); }
   double time_step() const { return heli_->time_step(); }
@@ -57,7 +70,9 @@ class ShipApproach {
   const flight::Helicopter& helicopter() const { return *heli_; }
   // The LRM domain when it runs in this process (batch path), else nullptr.
   LrmDomain* lrm_domain() { return fluid_ ? &fluid_->domain() : nullptr; }
-  // With LRM inflow: the flight side's end of the link (whether it fell back to Pitt-Peters), else nullptr.
+  // With LRM inflow: the flight side's end of the link (whether it fell back to Pitt-Peters), else
+  // nullptr. In real time it runs in the LRM thread: read only lost(), lost_reason() (once lost) and
+  // fallback_calls() from here.
   const LinkedInflow* linked_inflow() const { return linked_; }
   // The domain's pose at approach time t (also the ROS layer's tf), and the table's time then.
   DomainPose domain_pose(double t) const;
@@ -77,7 +92,8 @@ class ShipApproach {
   Eigen::Quaterniond attitude_;  // body -> mean frame, held
   std::unique_ptr<flight::Helicopter> heli_;
   std::shared_ptr<ApproachFluid> fluid_;  // batch path
-  LinkedInflow* linked_ = nullptr;        // owned by heli_
+  LinkedInflow* linked_ = nullptr;        // owned by heli_ (or by realtime_)
+  RealTimeInflow* realtime_ = nullptr;    // owned by heli_
   std::vector<double> hub_xyz_;
   std::vector<wake::WakeSample> hub_air_;
   ApproachSample sample_;

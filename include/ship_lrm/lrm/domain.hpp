@@ -46,6 +46,9 @@ struct LrmConfig {
 // cfg.reference_velocity (thesis: 30 m/s), so the lattice Mach number stays 0.3; the time step shrinks.
 LrmConfig config_for_stream(LrmConfig cfg, double fastest_stream);
 
+// The lattice units of cfg's domain (dx, dt, ...) without building it; lbm::ConfigError as LrmDomain.
+lbm::UnitConverter lattice_units(const LrmConfig& cfg);
+
 class LrmDomain {
  public:
   // Throws lbm::ConfigError for a < 1, N < 16 or a set-up beyond the Mach limit.

@@ -8,8 +8,9 @@
 //
 // When the link is lost (the fluid does not answer: its node died, its deadline passed), the model
 // serves the Pitt-Peters inflow from then on. Pitt-Peters runs alongside at every call, so its state
-// is current when it takes over (as RealTimeLrmInflow's fallback).
+// is current when it takes over (as RealTimeInflow's fallback).
 #pragma once
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -55,9 +56,11 @@ class LinkedInflow final : public rotor::InflowModel {
   rotor::RotorInflow inflow() const override { return served_; }
   bool needs_harmonics() const override { return true; }
 
-  bool lost() const { return lost_; }
+  // Safe to read from another thread (the real-time LRM thread calls this model): lost_reason() is
+  // written once, before lost() turns true.
+  bool lost() const { return lost_.load(std::memory_order_acquire); }
   const std::string& lost_reason() const { return lost_reason_; }
-  long fallback_calls() const { return fallback_calls_; }  // calls served by Pitt-Peters
+  long fallback_calls() const { return fallback_calls_.load(); }  // calls served by Pitt-Peters
 
  private:
   void exchange(InflowRequest& request);
@@ -65,8 +68,9 @@ class LinkedInflow final : public rotor::InflowModel {
   Placement placement_;
   rotor::PittPetersInflow fallback_;
   rotor::RotorInflow served_;
-  long sequence_ = 0, fallback_calls_ = 0;
-  bool lost_ = false;
+  long sequence_ = 0;
+  std::atomic<long> fallback_calls_{0};
+  std::atomic<bool> lost_{false};
   std::string lost_reason_;
 };
 

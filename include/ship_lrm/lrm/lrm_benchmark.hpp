@@ -33,7 +33,7 @@ struct LrmBenchmarkResult {
 LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg, double seconds, double speed,
                                      double warm_up);
 
-// The same coupled step paced to the wall clock (RealTimeLrmInflow): each flight-model step is due at
+// The same coupled step paced to the wall clock (RealTimeInflow): each flight-model step is due at
 // t0 + k dt; the LRM inflow that misses that deadline is replaced by Pitt-Peters and counted.
 LrmBenchmarkResult run_realtime_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg, double seconds, double speed,
                                           double warm_up, RealTimeMode mode = RealTimeMode::LockStep);

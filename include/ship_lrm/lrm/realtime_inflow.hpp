@@ -1,5 +1,6 @@
-// Wall-clock real-time mode of the LRM inflow (issue 4; ARCHITECTURE.md "Real time"): the LRM domain
-// runs in its own thread while the flight model keeps its pace. Every coupling step posts the rotor
+// Wall-clock real-time mode of the LRM inflow (issue 4; ARCHITECTURE.md "Real time"): a slow inflow
+// model (the LRM domain in this process, or the LRM solver behind a LinkedInflow, e.g. the ROS
+// nodelet) runs in its own thread while the flight model keeps its pace. Every coupling step posts the rotor
 // state to the LRM thread and waits for that step's inflow until a firm deadline. An inflow that
 // comes late is dropped and counted; that step uses the Pitt-Peters inflow, which runs alongside at
 // every step so that its state is always current. A late result is never served, not even one step
@@ -15,7 +16,7 @@
 //   synchronous model holds its inflow between LBM steps). The LRM thread thus has m flight steps of
 //   wall time per LBM step, at the price of an inflow one LBM interval older. A job late at its due
 //   step is dropped; Pitt-Peters serves until the next job makes its deadline.
-// Simulated-time runs (deterministic) use LrmInflow directly; this class is for paced runs.
+// Simulated-time runs (deterministic) use LrmInflow or LinkedInflow directly; this class is for paced runs.
 #pragma once
 
 #include <chrono>
@@ -40,13 +41,15 @@ struct RealTimeStats {
 
 enum class RealTimeMode { LockStep, Pipelined };
 
-class RealTimeLrmInflow final : public rotor::InflowModel {
+class RealTimeInflow final : public rotor::InflowModel {
  public:
-  // budget: wall-clock seconds a coupling step may wait for its LRM inflow after posting the state
+  // slow: the model run in the LRM thread (its reset and advance only ever run there or while that
+  // thread is idle); interval: its own step in simulated seconds (the LBM step: sets the pipeline's
+  // lag); budget: wall-clock seconds a coupling step may wait for its inflow after posting the state
   // (pipelined: m times that, counted from the posting).
-  RealTimeLrmInflow(const LrmConfig& cfg, double warm_up, double budget, RealTimeMode mode = RealTimeMode::LockStep);
-  ~RealTimeLrmInflow() override;
-  std::string name() const override { return "lrm-realtime"; }
+  RealTimeInflow(std::unique_ptr<rotor::InflowModel> slow, double interval, double budget, RealTimeMode mode = RealTimeMode::LockStep);
+  ~RealTimeInflow() override;
+  std::string name() const override { return slow_->name() + "-realtime"; }
   // Synchronous: starts (or keeps) the LRM flow and its warm-up, and the Pitt-Peters fallback.
   void reset(const rotor::RotorDiskState& state) override;
   void advance(const rotor::RotorDiskState& state, double dt) override;
@@ -61,8 +64,8 @@ class RealTimeLrmInflow final : public rotor::InflowModel {
   // A paced loop gives each step an absolute deadline instead (the wall-clock time the step is due);
   // a default time_point returns to the budget.
   void set_deadline(std::chrono::steady_clock::time_point t) { deadline_ = t; }
-  // The LRM model itself; only while the LRM thread is idle (after reset, or in tests).
-  LrmInflow& lrm() { return *lrm_; }
+  // The slow model itself; only while the LRM thread is idle (after reset, or in tests).
+  rotor::InflowModel& slow() { return *slow_; }
 
  private:
   void worker();
@@ -72,7 +75,8 @@ class RealTimeLrmInflow final : public rotor::InflowModel {
   // Waits for job `id` until `deadline`; true when its result was finished by then.
   bool collect(std::unique_lock<std::mutex>& lock, long id, std::chrono::steady_clock::time_point deadline);
   std::chrono::steady_clock::time_point deadline_after(std::chrono::steady_clock::time_point posted, int steps) const;
-  std::unique_ptr<LrmInflow> lrm_;
+  std::unique_ptr<rotor::InflowModel> slow_;
+  double interval_;
   RealTimeMode mode_;
   rotor::PittPetersInflow fallback_;
   std::chrono::duration<double> budget_;
@@ -92,7 +96,6 @@ class RealTimeLrmInflow final : public rotor::InflowModel {
   // time and state not yet handed to the LRM thread (it was busy)
   double pending_dt_ = 0;
   // pipelined: the job in flight, its due step, and the last LRM inflow that made its deadline
-  double lbm_dt_ = 0;
   int lag_steps_ = 1;
   bool in_flight_ = false, have_lrm_ = false;
   long in_flight_id_ = 0, due_step_ = 0;
@@ -100,5 +103,9 @@ class RealTimeLrmInflow final : public rotor::InflowModel {
   rotor::RotorInflow last_lrm_;
   std::thread thread_;
 };
+
+// The LRM domain in this process in real time (LrmInflow as the slow model, its LBM step as the interval).
+std::unique_ptr<RealTimeInflow> make_realtime_lrm(const LrmConfig& cfg, double warm_up, double budget,
+                                                  RealTimeMode mode = RealTimeMode::LockStep);
 
 }  // namespace ship_lrm::lrm
