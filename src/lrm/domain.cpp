@@ -161,9 +161,21 @@ void LrmDomain::rebuild(bool carry_flow) {
     set_motion(motion_);
   }
   // after the faces: the carried state is the reference the impedance outlets start from
-  if (!rho.empty())
-    solver_->initialize(rho, u);
-  else
+  if (!rho.empty()) {
+    try {
+      solver_->initialize(rho, u);
+    } catch (const lbm::ConfigError&) {
+      // the carried flow itself is beyond the limits: the LRM flow has diverged, the input is fine
+      const float umax = lbm::kMaxSetupMach * std::sqrt(lbm::d3q19::cs2);
+      for (std::size_t c = 0; c < rho.size(); ++c) {
+        const float sp = std::sqrt(u[3 * c] * u[3 * c] + u[3 * c + 1] * u[3 * c + 1] + u[3 * c + 2] * u[3 * c + 2]);
+        if (!(sp <= umax) || !(rho[c] > 0.0f && rho[c] < 2.0f))
+          throw lbm::DivergenceError(steps_, static_cast<int>(c % edge_), static_cast<int>((c / edge_) % edge_),
+                                     static_cast<int>(c / (static_cast<std::size_t>(edge_) * edge_)), sp, umax);
+      }
+      throw;
+    }
+  } else
     solver_->initialize({}, {});
 }
 

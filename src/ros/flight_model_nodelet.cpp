@@ -2,8 +2,14 @@
 // of thesis 9.1 with fixed controls along the prescribed path). Translates only: parameters ->
 // ApproachConfig, the inflow link -> ROS topics (RosInflowLink), the core's samples -> messages and tf.
 // Runs its loop on its own thread in simulated time (publishes /clock: ROS time = clock_offset +
-// simulated time), or paced to the wall clock (realtime:=true). When the LRM solver stops answering,
-// the core falls back to Pitt-Peters and the diagnostics say so at ERROR level.
+// simulated time), or paced to the wall clock (realtime:=true): then each step's LRM inflow has a
+// firm deadline (the step's due time; core: RealTimeInflow), and a late one is replaced by
+// Pitt-Peters for that step and counted. When the LRM solver stops answering for lrm_timeout, the core
+// falls back to Pitt-Peters for good and the diagnostics say so at ERROR level.
+// Pilot input: ship_lrm/PilotControls on pilot/controls replace the trim's controls from the next
+// step on; the loads of that step are published at once (besides the output_interval grid) and carry
+// the input's stamp (pilot_stamp), so the input-to-loads latency can be measured. The trim's controls
+// go out latched on pilot/trim (the Scenario nodelet centres the stick on them).
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/WrenchStamped.h>
 #include <nav_msgs/Odometry.h>
@@ -12,18 +18,24 @@
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <mutex>
+#include <optional>
 #include <pluginlib/class_list_macros.hpp>
 #include <thread>
 
+#include "ship_lrm/PilotControls.h"
 #include "ship_lrm/RotorLoads.h"
 #include "ship_lrm/flight/parameters.hpp"
 #include "ship_lrm/lrm/approach.hpp"
+#include "ship_lrm/lrm/wall_clock_pacer.hpp"
 #include "ship_lrm/ros/approach_params.hpp"
 #include "ship_lrm/ros/conversions.hpp"
 #include "ship_lrm/ros/ros_inflow_link.hpp"
 #include "ship_lrm/ros/run_status.hpp"
+#include "ship_lrm/ros/sim_epoch.hpp"
 
 namespace ship_lrm::ros_layer {
 
@@ -48,6 +60,11 @@ class FlightModelNodelet : public nodelet::Nodelet {
       pnh.param("tf_interval", tf_interval_, 0.02);
       pnh.param("clock_offset", clock_offset_, 1.0);
       pnh.param("wait_for_loads_subscribers", wait_for_subscribers_, 0);
+      std::string mode;
+      pnh.param<std::string>("realtime_mode", mode, "lockstep");
+      if (mode != "lockstep" && mode != "pipelined")
+        throw ParamError("parameter " + pnh.resolveName("realtime_mode") + " must be lockstep or pipelined, got '" + mode + "'");
+      realtime_mode_ = mode == "pipelined" ? lrm::RealTimeMode::Pipelined : lrm::RealTimeMode::LockStep;
       std::string config;
       pnh.param<std::string>("helicopter_config", config, "");
       params_ = config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(config);
@@ -65,15 +82,51 @@ class FlightModelNodelet : public nodelet::Nodelet {
     wrench_ = nh.advertise<geometry_msgs::WrenchStamped>("rotor/wrench", 10);
     odom_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
     status_ = nh.advertise<std_msgs::String>(kRunStatusTopic, 1, true);
+    epoch_pub_ = nh.advertise<std_msgs::Time>(kEpochTopic, 1, true);
+    trim_pub_ = nh.advertise<ship_lrm::PilotControls>("pilot/trim", 1, true);
+    pilot_ = nh.subscribe("pilot/controls", 4, &FlightModelNodelet::on_pilot, this, ros::TransportHints().tcpNoDelay());
     diagnostics_.setHardwareID("ship_lrm flight model");
     diagnostics_.add("flight model", this, &FlightModelNodelet::diagnose);
     if (cfg_.inflow == "lrm") link_ = std::make_shared<RosInflowLink>(nh, lrm_timeout_);
     thread_ = std::thread([this] { run(); });
   }
 
-  ros::Time stamp(double t) const { return ros::Time(clock_offset_ + t); }
+  ros::Time stamp(double t) const { return ros::Time(epoch_ + t); }
+
+  void on_pilot(const ship_lrm::PilotControls::ConstPtr& m) {
+    flight::PilotControls c;
+    c.collective = m->collective;
+    c.longitudinal = m->longitudinal;
+    c.lateral = m->lateral;
+    c.pedal = m->pedal;
+    for (double* v : {&c.collective, &c.longitudinal, &c.lateral, &c.pedal}) {
+      if (!std::isfinite(*v)) {
+        NODELET_WARN_THROTTLE(5, "FlightModel: ignoring pilot controls that are not finite");
+        return;
+      }
+      if (*v < 0 || *v > 100) {
+        NODELET_WARN_THROTTLE(5, "FlightModel: pilot controls outside 0-100 %% are clamped");
+        *v = std::clamp(*v, 0.0, 100.0);
+      }
+    }
+    std::lock_guard<std::mutex> lock(pilot_mutex_);
+    pilot_controls_ = c;
+    pilot_msg_stamp_ = m->header.stamp;
+    pilot_new_ = true;
+  }
+
+  // the newest pilot input, if one came since the last step (applied before the next)
+  bool take_pilot_input() {
+    std::lock_guard<std::mutex> lock(pilot_mutex_);
+    if (!pilot_new_) return false;
+    pilot_new_ = false;
+    approach_->helicopter().set_controls(pilot_controls_);
+    pilot_stamp_ = pilot_msg_stamp_;
+    return true;
+  }
 
   void run() {
+    epoch_ = realtime_ ? ros::WallTime::now().toSec() : clock_offset_;  // refined at the start in real time
     if (!realtime_) publish_clock(0.0);
     // a recorder (rosbag) or a test that must see every load subscribes before the first step
     const auto wait_until = std::chrono::steady_clock::now() + std::chrono::duration<double>(connect_timeout_);
@@ -89,7 +142,9 @@ class FlightModelNodelet : public nodelet::Nodelet {
       link_->set_timeout(1e-3);
     }
     try {
-      approach_ = std::make_unique<lrm::ShipApproach>(cfg_, params_, link_);
+      std::optional<lrm::RealTimeMode> rt;
+      if (realtime_) rt = realtime_mode_;
+      approach_ = std::make_unique<lrm::ShipApproach>(cfg_, params_, link_, rt);
     } catch (const std::exception& e) {
       NODELET_FATAL("FlightModel: %s", e.what());
       report_failure(getNodeHandle(), std::string("FlightModel: ") + e.what());
@@ -97,26 +152,29 @@ class FlightModelNodelet : public nodelet::Nodelet {
     }
     NODELET_INFO("FlightModel: approach on %s, inflow %s, %g s; trim %.2f %% collective", cfg_.table.c_str(), cfg_.inflow.c_str(),
                  cfg_.duration, approach_->trim().controls.collective);
+    publish_trim();
+    lrm::WallClockPacer pacer;  // real time: simulated time 0 is due now
+    if (realtime_) epoch_ = ros::WallTime::now().toSec();
+    std_msgs::Time epoch;
+    epoch.data = ros::Time(epoch_);
+    epoch_pub_.publish(epoch);
     send_static_tf();
-    publish(true);
-    const auto wall_start = std::chrono::steady_clock::now();
+    publish(true, false);
     while (!stop_ && ros::ok() && !approach_->done()) {
+      const bool piloted = take_pilot_input();
+      if (realtime_) approach_->set_deadline(pacer.due(approach_->time() + approach_->time_step()));
       const auto t0 = std::chrono::steady_clock::now();
       approach_->step();
       step_wall_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const double t = approach_->time();
-      if (realtime_) {
-        const auto due = wall_start + std::chrono::duration<double>(t);
-        if (std::chrono::steady_clock::now() > due)
-          ++deadline_misses_;
-        else
-          std::this_thread::sleep_until(due);
-      } else {
-        publish_clock(t);
-      }
+      if (!realtime_) publish_clock(t);
       ++steps_;
-      publish(false);
+      publish(false, piloted);
       report_fallback();
+      if (realtime_) {
+        pacer.wait_until(t);
+        overruns_ = pacer.overruns();
+      }
     }
     if (approach_ && approach_->done()) {
       NODELET_INFO("FlightModel: approach finished at t = %.3f s (%ld steps, t_clock/t_sim %.2f)", approach_->time(), steps_,
@@ -159,12 +217,33 @@ class FlightModelNodelet : public nodelet::Nodelet {
     static_tf_.sendTransform(fixed);
   }
 
-  void publish(bool first) {
+  void publish_trim() {
+    const flight::PilotControls& c = approach_->trim().controls;
+    ship_lrm::PilotControls m;
+    m.header.stamp = stamp(0);
+    m.collective = c.collective;
+    m.longitudinal = c.longitudinal;
+    m.lateral = c.lateral;
+    m.pedal = c.pedal;
+    trim_pub_.publish(m);
+  }
+
+  // true when this step's inflow is Pitt-Peters' though the LRM was asked for
+  bool fell_back() const {
+    const lrm::LinkedInflow* l = approach_->linked_inflow();
+    if (l && l->lost()) return true;
+    const lrm::RealTimeInflow* rt = approach_->realtime_inflow();
+    return rt && rt->stats().last_was_fallback;
+  }
+
+  // first: the state at t = 0; piloted: this step applied new pilot input (published at once)
+  void publish(bool first, bool piloted) {
     const lrm::ApproachSample& s = approach_->sample();
     const ros::Time now = stamp(s.time);
     const double eps = 0.5 * approach_->time_step();
-    if (first || s.time >= next_output_ - eps) {
-      next_output_ = first ? output_interval_ : next_output_ + output_interval_;  // the grid of `ship_lrm approach`
+    const bool on_grid = first || s.time >= next_output_ - eps;
+    if (on_grid || piloted) {
+      if (on_grid) next_output_ = first ? output_interval_ : next_output_ + output_interval_;  // the grid of `ship_lrm approach`
       ship_lrm::RotorLoads m;
       m.header.stamp = now;
       m.header.frame_id = "main_rotor";
@@ -178,9 +257,9 @@ class FlightModelNodelet : public nodelet::Nodelet {
       m.height_above_deck = s.height_above_deck;
       m.speed = s.speed;
       m.inflow_mean = to_msg(s.inflow_mean);
-      const lrm::LinkedInflow* l = approach_->linked_inflow();
-      m.fallback = l && l->lost();
+      m.fallback = fell_back();
       m.inflow_model = (cfg_.inflow == "lrm" && !m.fallback) ? "lrm" : "pitt_peters";
+      m.pilot_stamp = pilot_stamp_;
       loads_.publish(m);
       // the rotor's aerodynamic load in main_rotor (FLU twin of mr: y and z change sign)
       const auto& o = approach_->helicopter().outputs();
@@ -225,21 +304,29 @@ class FlightModelNodelet : public nodelet::Nodelet {
       return;
     }
     const lrm::LinkedInflow* l = approach_->linked_inflow();
+    const lrm::RealTimeInflow* rt = approach_->realtime_inflow();
     const double t = approach_->time();
     const double ratio = t > 0 ? approach_->wall_seconds() / t : 0.0;
     if (l && l->lost())
       stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "LRM lost, Pitt-Peters fallback: " + l->lost_reason());
     else if (!std::isfinite(approach_->sample().thrust))
       stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "rotor loads not finite");
-    else if (realtime_ && deadline_misses_ > 0)
-      stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "deadline misses");
+    else if (rt && rt->stats().miss_fraction() > 0.01)
+      stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "more than 1 % of the steps missed their LRM deadline");
     else
       stat.summary(diagnostic_msgs::DiagnosticStatus::OK, cfg_.inflow + " inflow");
     stat.add("simulated time (s)", t);
     stat.add("steps", steps_);
     stat.add("step time (ms)", 1e3 * step_wall_s_);
     stat.add("real-time ratio t_clock/t_sim", ratio);
-    stat.add("deadline misses", deadline_misses_);
+    if (rt) {
+      const lrm::RealTimeStats st = rt->stats();
+      stat.add("deadline misses", st.deadline_misses);
+      stat.add("deadline miss fraction", st.miss_fraction());
+      stat.add("worst inflow wait (ms)", 1e3 * st.worst_wait_s);
+      stat.add("real-time mode", rt->mode() == lrm::RealTimeMode::Pipelined ? "pipelined" : "lockstep");
+    }
+    if (realtime_) stat.add("steps ended after their due time", overruns_.load());
     stat.add("inflow model", l && l->lost() ? "pitt_peters (fallback)" : cfg_.inflow);
     if (l) stat.add("fallback steps", l->fallback_calls());
     stat.add("C_T", approach_->sample().ct);
@@ -248,13 +335,21 @@ class FlightModelNodelet : public nodelet::Nodelet {
   lrm::ApproachConfig cfg_;
   flight::HelicopterParameters params_;
   bool realtime_ = false, reported_lost_ = false;
+  lrm::RealTimeMode realtime_mode_ = lrm::RealTimeMode::LockStep;
+  double epoch_ = 1.0;  // ROS time of simulated time 0 (sim_epoch.hpp)
+  std::atomic<long> overruns_{0};
+  std::mutex pilot_mutex_;
+  flight::PilotControls pilot_controls_;
+  ros::Time pilot_msg_stamp_, pilot_stamp_;
+  bool pilot_new_ = false;
   double lrm_timeout_ = 30, connect_timeout_ = 60, output_interval_ = 0.01, tf_interval_ = 0.02, clock_offset_ = 1.0;
   double next_output_ = 0, next_tf_ = 0, step_wall_s_ = 0;
-  long steps_ = 0, deadline_misses_ = 0;
+  long steps_ = 0;
   int wait_for_subscribers_ = 0;
   std::shared_ptr<RosInflowLink> link_;
   std::unique_ptr<lrm::ShipApproach> approach_;
-  ros::Publisher clock_, loads_, wrench_, odom_, status_;
+  ros::Publisher clock_, loads_, wrench_, odom_, status_, epoch_pub_, trim_pub_;
+  ros::Subscriber pilot_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
   diagnostic_updater::Updater diagnostics_;

@@ -20,6 +20,7 @@
 #include "ship_lrm/ros/approach_params.hpp"
 #include "ship_lrm/ros/conversions.hpp"
 #include "ship_lrm/ros/run_status.hpp"
+#include "ship_lrm/ros/sim_epoch.hpp"
 
 namespace ship_lrm::ros_layer {
 
@@ -55,10 +56,11 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     box_ = nh.advertise<visualization_msgs::Marker>("lrm/domain", 2, true);
     diagnostics_.setHardwareID("ship_lrm LRM solver");
     diagnostics_.add("LRM solver", this, &LrmSolverNodelet::diagnose);
+    epoch_.follow(nh, clock_offset_);
     forces_ = nh.subscribe("rotor/forces", 4, &LrmSolverNodelet::on_forces, this, ros::TransportHints().tcpNoDelay());
   }
 
-  ros::Time stamp(double t) const { return ros::Time(clock_offset_ + t); }
+  ros::Time stamp(double t) const { return epoch_.stamp(t); }
 
   void on_forces(const ship_lrm::RotorForces::ConstPtr& msg) {
     lrm::InflowRequest r;
@@ -180,6 +182,7 @@ class LrmSolverNodelet : public nodelet::Nodelet {
 
   std::unique_ptr<lrm::ApproachFluid> fluid_;
   double slice_interval_ = 0.1, clock_offset_ = 1.0, next_slice_ = 0, step_ms_ = 0, mlups_ = 0, max_mach_ = 0;
+  SimEpoch epoch_;
   int slice_normal_ = 1;
   long served_ = 0;
   bool diverged_ = false, box_sent_ = false;

@@ -15,6 +15,7 @@
 #include "ship_lrm/ros/approach_params.hpp"
 #include "ship_lrm/ros/conversions.hpp"
 #include "ship_lrm/ros/run_status.hpp"
+#include "ship_lrm/ros/sim_epoch.hpp"
 
 namespace ship_lrm::ros_layer {
 
@@ -45,6 +46,7 @@ class ShipMotionNodelet : public nodelet::Nodelet {
     flu.transform = frd_to_flu();
     static_tf_.sendTransform(flu);
     publish_mesh();
+    epoch_.follow(nh, clock_offset_);
     timer_ = nh.createTimer(ros::Duration(1.0 / rate), &ShipMotionNodelet::tick, this);
   }
 
@@ -71,7 +73,7 @@ class ShipMotionNodelet : public nodelet::Nodelet {
 
   void tick(const ros::TimerEvent&) {
     const ros::Time now = ros::Time::now();
-    const double t = std::max(0.0, now.toSec() - clock_offset_);
+    const double t = std::max(0.0, epoch_.to_simulated(now));
     const double table_t = std::min(table_->info().start_time + cfg_.table_offset + t, table_->info().end_time());
     const wake::ShipPlacement place = ship_.motion->placement(table_t);
     // the ship frame's origin and axes in the mean frame
@@ -93,6 +95,7 @@ class ShipMotionNodelet : public nodelet::Nodelet {
 
   lrm::ApproachConfig cfg_;
   double clock_offset_ = 1.0;
+  SimEpoch epoch_;
   std::shared_ptr<wake::WakeTable> table_;
   lrm::ApproachShip ship_;
   ros::Publisher twist_, mesh_;
