@@ -17,6 +17,7 @@
 #include <rosgraph_msgs/Clock.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
 #include <atomic>
@@ -81,6 +82,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
     loads_ = nh.advertise<ship_lrm::RotorLoads>("rotor/loads", 100);
     wrench_ = nh.advertise<geometry_msgs::WrenchStamped>("rotor/wrench", 10);
     odom_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
+    markers_ = nh.advertise<visualization_msgs::MarkerArray>("helicopter/markers", 2);
     status_ = nh.advertise<std_msgs::String>(kRunStatusTopic, 1, true);
     epoch_pub_ = nh.advertise<std_msgs::Time>(kEpochTopic, 1, true);
     trim_pub_ = nh.advertise<ship_lrm::PilotControls>("pilot/trim", 1, true);
@@ -294,8 +296,57 @@ class FlightModelNodelet : public nodelet::Nodelet {
       od.twist.twist.linear = to_msg(frd_to_flu(b.velocity));
       od.twist.twist.angular = to_msg(frd_to_flu(b.rate));
       odom_.publish(od);
+      publish_markers(now);
       diagnostics_.update();
     }
+  }
+
+  // For rviz (rviz/lrm.rviz): the fuselage (an ellipsoid of the Bo 105's size), the rotor disk, and
+  // arrows of the mean inflow (0.5 m per m/s) and of the rotor's aerodynamic force (1 m per 5 kN) at the hub.
+  void publish_markers(const ros::Time& now) {
+    const auto& heli = approach_->helicopter();
+    const double R = heli.parameters().main_rotor.radius;
+    visualization_msgs::MarkerArray a;
+    auto marker = [&](const char* frame, int id, int type, float r, float g, float b, float alpha) {
+      visualization_msgs::Marker m;
+      m.header.stamp = now;
+      m.header.frame_id = frame;
+      m.ns = "helicopter";
+      m.id = id;
+      m.type = type;
+      m.action = visualization_msgs::Marker::ADD;
+      m.pose.orientation.w = 1;
+      m.color.r = r;
+      m.color.g = g;
+      m.color.b = b;
+      m.color.a = alpha;
+      return m;
+    };
+    visualization_msgs::Marker body = marker("base_link", 0, visualization_msgs::Marker::SPHERE, 0.2f, 0.35f, 0.6f, 1.0f);
+    body.scale.x = 4.3;  // cabin length, width, height (Bo 105, about)
+    body.scale.y = 1.6;
+    body.scale.z = 1.8;
+    a.markers.push_back(body);
+    visualization_msgs::Marker disk = marker("main_rotor", 1, visualization_msgs::Marker::CYLINDER, 0.8f, 0.8f, 0.8f, 0.35f);
+    disk.scale.x = disk.scale.y = 2 * R;
+    disk.scale.z = 0.05;
+    a.markers.push_back(disk);
+    const auto arrow = [&](int id, const Vec3& v_flu, double scale, float r, float g, float b) {
+      visualization_msgs::Marker m = marker("main_rotor", id, visualization_msgs::Marker::ARROW, r, g, b, 1.0f);
+      m.scale.x = 0.25;  // shaft diameter, head diameter, head length
+      m.scale.y = 0.5;
+      m.scale.z = 0.6;
+      geometry_msgs::Point p0, p1;
+      p1.x = scale * v_flu.x();
+      p1.y = scale * v_flu.y();
+      p1.z = scale * v_flu.z();
+      m.points = {p0, p1};
+      return m;
+    };
+    const lrm::ApproachSample& s = approach_->sample();
+    a.markers.push_back(arrow(2, frd_to_flu(s.inflow_mean), 0.5, 0.1f, 0.6f, 1.0f));
+    a.markers.push_back(arrow(3, frd_to_flu(heli.outputs().rotor.aero_force), 1.0 / 5000.0, 1.0f, 0.4f, 0.1f));
+    markers_.publish(a);
   }
 
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
@@ -348,7 +399,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
   int wait_for_subscribers_ = 0;
   std::shared_ptr<RosInflowLink> link_;
   std::unique_ptr<lrm::ShipApproach> approach_;
-  ros::Publisher clock_, loads_, wrench_, odom_, status_, epoch_pub_, trim_pub_;
+  ros::Publisher clock_, loads_, wrench_, odom_, status_, epoch_pub_, trim_pub_, markers_;
   ros::Subscriber pilot_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;

@@ -107,11 +107,11 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     t.child_frame_id = "lrm_domain";
     t.transform = transform(r.pose.hub, Eigen::Quaterniond(r.pose.rotation));
     tf_.sendTransform(t);
-    if (!box_sent_) {
-      box_sent_ = true;
+    if (r.kind == lrm::InflowRequest::Kind::Advance && r.state.time + 1e-9 < next_slice_) return;
+    {  // the box with every slice: a display that joins late, or dropped it before the first tf, draws it
       lrm::LrmDomain& d = fluid_->domain();
       visualization_msgs::Marker m;
-      m.header.stamp = now;
+      m.header.stamp = ros::Time(0);  // latched: drawn at the newest tf of the domain, wherever it is
       m.header.frame_id = "lrm_domain";
       m.ns = "lrm";
       m.type = visualization_msgs::Marker::CUBE;
@@ -131,7 +131,6 @@ class LrmSolverNodelet : public nodelet::Nodelet {
       m.color.a = 0.15f;
       box_.publish(m);
     }
-    if (r.kind == lrm::InflowRequest::Kind::Advance && r.state.time + 1e-9 < next_slice_) return;
     next_slice_ = r.state.time + slice_interval_;
     const lrm::DomainSlice s = lrm::domain_slice(fluid_->domain(), slice_normal_);
     max_mach_ = s.max_mach;
@@ -185,7 +184,7 @@ class LrmSolverNodelet : public nodelet::Nodelet {
   SimEpoch epoch_;
   int slice_normal_ = 1;
   long served_ = 0;
-  bool diverged_ = false, box_sent_ = false;
+  bool diverged_ = false;
   std::string failure_;
   ros::Publisher inflow_, slice_, box_;
   ros::Subscriber forces_;

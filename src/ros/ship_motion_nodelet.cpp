@@ -45,8 +45,10 @@ class ShipMotionNodelet : public nodelet::Nodelet {
     flu.child_frame_id = "ship";
     flu.transform = frd_to_flu();
     static_tf_.sendTransform(flu);
-    publish_mesh();
     epoch_.follow(nh, clock_offset_);
+    // the mesh goes out once a second (and latched): a display that joins late, or that got it before
+    // the first ship_frd transform and dropped it, draws it at the next one
+    mesh_timer_ = nh.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) { publish_mesh(); });
     timer_ = nh.createTimer(ros::Duration(1.0 / rate), &ShipMotionNodelet::tick, this);
   }
 
@@ -100,6 +102,7 @@ class ShipMotionNodelet : public nodelet::Nodelet {
   lrm::ApproachShip ship_;
   ros::Publisher twist_, mesh_;
   ros::Timer timer_;
+  ros::WallTimer mesh_timer_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
 };
