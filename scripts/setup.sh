@@ -14,7 +14,7 @@ PACKAGES=(
   libvisualization-msgs-dev libros-rosgraph-msgs-dev python3-rospy python3-roslib python3-roslaunch python3-rosbag
   python3-tf2-ros python3-std-msgs python3-geometry-msgs python3-sensor-msgs python3-nav-msgs python3-diagnostic-msgs
   python3-matplotlib python3-numpy python3-scipy python3-pywt
-  rviz xvfb xauth imagemagick libgl1-mesa-dri
+  rviz xvfb xauth imagemagick libgl1-mesa-dri rosbash
 )
 missing=()
 for p in "${PACKAGES[@]}"; do
