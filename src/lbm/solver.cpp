@@ -1,5 +1,6 @@
 #include "ship_lrm/lbm/solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -73,17 +74,30 @@ void Solver::set_boundary_values(const std::vector<float>& values) {
   do_set_boundary_values(boundary_values_);
 }
 
+float max_setup_speed() { return kMaxSetupMach * std::sqrt(d3q19::cs2); }
+
+long first_invalid_setup_cell(const std::vector<float>& rho, const std::vector<float>& u, float* speed) {
+  const float umax = max_setup_speed();
+  const std::size_t n = std::max(rho.size(), u.size() / 3);
+  for (std::size_t c = 0; c < n; ++c) {
+    const float s = c < u.size() / 3 ? std::sqrt(u[3 * c] * u[3 * c] + u[3 * c + 1] * u[3 * c + 1] + u[3 * c + 2] * u[3 * c + 2]) : 0.0f;
+    const bool bad_rho = c < rho.size() && !(rho[c] > 0.0f && rho[c] < 2.0f);
+    if (bad_rho || !(s <= umax)) {
+      if (speed) *speed = s;
+      return static_cast<long>(c);
+    }
+  }
+  return -1;
+}
+
 void Solver::initialize(const std::vector<float>& rho, const std::vector<float>& u) {
   const std::size_t n = lattice_.cells();
   if (!rho.empty() && rho.size() != n) throw ConfigError("initialize: density field has the wrong size");
   if (!u.empty() && u.size() != 3 * n) throw ConfigError("initialize: velocity field has the wrong size (3 per cell)");
-  for (float r : rho)
-    if (!(r > 0.0f && r < 2.0f)) throw ConfigError("initialize: density must lie in (0, 2) lattice units");
-  const float umax = kMaxSetupMach * std::sqrt(d3q19::cs2);
-  for (std::size_t c = 0; c < u.size() / 3; ++c) {
-    const float s = std::sqrt(u[3 * c] * u[3 * c] + u[3 * c + 1] * u[3 * c + 1] + u[3 * c + 2] * u[3 * c + 2]);
-    if (!(s <= umax)) throw ConfigError("initialize: initial velocity above the Mach limit or not finite");
-  }
+  const long bad = first_invalid_setup_cell(rho, u);
+  if (bad >= 0 && !rho.empty() && !(rho[bad] > 0.0f && rho[bad] < 2.0f))
+    throw ConfigError("initialize: density must lie in (0, 2) lattice units");
+  if (bad >= 0) throw ConfigError("initialize: initial velocity above the Mach limit or not finite");
   if (reference_change_pending_) {  // the new state is the reference's: nothing left to follow
     clear_reference_change();
   }

@@ -165,15 +165,13 @@ void LrmDomain::rebuild(bool carry_flow) {
     try {
       solver_->initialize(rho, u);
     } catch (const lbm::ConfigError&) {
-      // the carried flow itself is beyond the limits: the LRM flow has diverged, the input is fine
-      const float umax = lbm::kMaxSetupMach * std::sqrt(lbm::d3q19::cs2);
-      for (std::size_t c = 0; c < rho.size(); ++c) {
-        const float sp = std::sqrt(u[3 * c] * u[3 * c] + u[3 * c + 1] * u[3 * c + 1] + u[3 * c + 2] * u[3 * c + 2]);
-        if (!(sp <= umax) || !(rho[c] > 0.0f && rho[c] < 2.0f))
-          throw lbm::DivergenceError(steps_, static_cast<int>(c % edge_), static_cast<int>((c / edge_) % edge_),
-                                     static_cast<int>(c / (static_cast<std::size_t>(edge_) * edge_)), sp, umax);
-      }
-      throw;
+      // the carried flow itself is beyond the set-up limits: the LRM flow has diverged, the input is fine
+      float speed = 0;
+      const long c = lbm::first_invalid_setup_cell(rho, u, &speed);
+      if (c < 0) throw;
+      const long e = edge_;
+      throw lbm::DivergenceError(steps_, static_cast<int>(c % e), static_cast<int>((c / e) % e), static_cast<int>(c / (e * e)), speed,
+                                 lbm::max_setup_speed());
     }
   } else
     solver_->initialize({}, {});

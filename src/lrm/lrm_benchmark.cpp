@@ -9,6 +9,7 @@
 #include "ship_lrm/flight/trim.hpp"
 #include "ship_lrm/lrm/lrm_inflow.hpp"
 #include "ship_lrm/lrm/realtime_inflow.hpp"
+#include "ship_lrm/lrm/wall_clock_pacer.hpp"
 
 namespace ship_lrm::lrm {
 
@@ -106,17 +107,16 @@ LrmBenchmarkResult run_realtime_benchmark(const flight::HelicopterParameters& p,
   const long lbm0 = lrm.lbm_steps();
   const long steps = static_cast<long>(std::ceil(seconds / heli.time_step()));
   using clock = std::chrono::steady_clock;
-  const auto dt = std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(heli.time_step()));
-  const auto t0 = clock::now();
+  WallClockPacer pacer;
   for (long i = 0; i < steps; ++i) {
-    const auto due = t0 + (i + 1) * dt;
-    rt->set_deadline(due);
+    const double t = (i + 1) * heli.time_step();
+    rt->set_deadline(pacer.due(t));
     const auto s0 = clock::now();
     heli.step();
     r.worst_step_s = std::max(r.worst_step_s, std::chrono::duration<double>(clock::now() - s0).count());
-    std::this_thread::sleep_until(due);  // paced: the next step starts on time (or at once when late)
+    pacer.wait_until(t);  // paced: the next step starts on time (or at once when late)
   }
-  r.wall_seconds = std::chrono::duration<double>(clock::now() - t0).count();
+  r.wall_seconds = pacer.elapsed();
   const RealTimeStats st = rt->stats();
   r.flight_steps = steps;
   r.simulated_seconds = steps * heli.time_step();

@@ -24,6 +24,11 @@ class DivergenceError : public std::runtime_error {
   int x, y, z;
 };
 
+// The first cell of a set-up state (rho, u in lattice units; either may be empty) that Solver::initialize
+// refuses: density outside (0, 2), or speed not finite or above kMaxSetupMach c_s; -1 when none.
+long first_invalid_setup_cell(const std::vector<float>& rho, const std::vector<float>& u, float* speed = nullptr);
+float max_setup_speed();  // kMaxSetupMach c_s, lattice units
+
 // Motion of a lattice's frame (see Solver::set_frame_motion), lattice units.
 struct FrameMotion {
   std::array<float, 3> acceleration{0, 0, 0};  // of the reference point, frame axes
@@ -95,7 +100,7 @@ class Solver {
   virtual void do_step(bool odd) = 0;
   virtual void do_fields(bool next_odd, Fields& out) = 0;
   virtual void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) = 0;
-  virtual void do_set_populations(const std::vector<float>& g) = 0;  // validated, populations() layout
+  virtual void do_set_populations(const std::vector<float>& g) = 0;           // validated, populations() layout
   virtual void sync_view() = 0;                                               // after view_ parameters changed on the host
   virtual void sync_walls() {}                                                // after lattice_'s wall motions changed (device copy)
   virtual void do_set_boundary_values(const std::vector<float>& values) = 0;  // validated, 4 per cell
