@@ -1,6 +1,8 @@
 // The fluid side of the ship approach (see approach_fluid.hpp).
 #include "ship_lrm/lrm/approach_fluid.hpp"
 
+#include <Eigen/Geometry>
+
 #include "ship_lrm/lrm/walls.hpp"
 
 namespace ship_lrm::lrm {
@@ -23,14 +25,50 @@ void ApproachFluid::place(double table_time, const DomainPose& pose) {
   if (feed_ && feed_->apply(lrm_.domain(), table_time, pose)) ++face_refreshes_;
   placed_ = true;
   placed_time_ = table_time;
+  placed_pose_ = pose;
 }
 
+namespace {
+DomainPose between(const DomainPose& a, const DomainPose& b, double f) {
+  DomainPose p;
+  p.hub = a.hub + f * (b.hub - a.hub);
+  p.rotation = Eigen::Quaterniond(a.rotation).slerp(f, Eigen::Quaterniond(b.rotation)).toRotationMatrix();
+  p.hub_velocity = a.hub_velocity + f * (b.hub_velocity - a.hub_velocity);
+  p.omega = a.omega + f * (b.omega - a.omega);
+  return p;
+}
+// The rotor's motion between two requests; the loads stay the newer request's (the job's).
+rotor::RotorDiskState between(const rotor::RotorDiskState& a, const rotor::RotorDiskState& b, double f) {
+  rotor::RotorDiskState s = b;
+  s.time = a.time + f * (b.time - a.time);
+  s.hub_velocity = a.hub_velocity + f * (b.hub_velocity - a.hub_velocity);
+  s.body_rate = a.body_rate + f * (b.body_rate - a.body_rate);
+  return s;
+}
+}  // namespace
+
 rotor::RotorInflow ApproachFluid::serve(const InflowRequest& request) {
-  place(request.table_time, request.pose);
-  if (request.kind == InflowRequest::Kind::Reset)
-    lrm_.reset(request.state);
-  else
-    lrm_.advance(request.state, request.dt);
+  const long steps = request.kind == InflowRequest::Kind::Advance ? lrm_.steps_due(request.dt) : 0;
+  if (steps <= 1 || !placed_) {
+    place(request.table_time, request.pose);
+    if (request.kind == InflowRequest::Kind::Reset)
+      lrm_.reset(request.state);
+    else
+      lrm_.advance(request.state, request.dt);
+  } else {
+    const double t0 = placed_time_;
+    const DomainPose pose0 = placed_pose_;
+    const rotor::RotorDiskState state0 = last_state_;
+    double done = 0;
+    for (long k = 1; k <= steps; ++k) {
+      const double f = static_cast<double>(k) / static_cast<double>(steps);
+      place(t0 + f * (request.table_time - t0), between(pose0, request.pose, f));
+      const double dt = k < steps ? f * request.dt - done : request.dt - done;
+      lrm_.advance(between(state0, request.state, f), dt);
+      done += dt;
+    }
+  }
+  last_state_ = request.state;
   return lrm_.inflow();
 }
 

@@ -49,12 +49,17 @@ void LrmInflow::reset(const rotor::RotorDiskState& state) {
   inflow_ = domain_.inflow();
 }
 
+long LrmInflow::steps_due(double dt) const {
+  if (!started_) return 0;
+  // whole LBM steps up to the flight model's time (one per coupling step at N = 64: both 1.80352 ms)
+  return static_cast<long>(std::floor((time_ + dt - domain_.time()) / domain_.time_step() + 0.5));
+}
+
 void LrmInflow::advance(const rotor::RotorDiskState& state, double dt) {
   if (!started_) reset(state);
   take(state, &times_);
+  const long n = steps_due(dt);
   time_ += dt;
-  // whole LBM steps up to the flight model's time (one per coupling step at N = 64: both 1.80352 ms)
-  const long n = static_cast<long>(std::floor((time_ - domain_.time()) / domain_.time_step() + 0.5));
   if (n <= 0) return;  // a coarse lattice steps less often; the last inflow holds meanwhile
   auto t = Clock::now();
   domain_.step(n);

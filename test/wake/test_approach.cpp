@@ -5,6 +5,7 @@
 
 #include "ship_lrm/flight/parameters.hpp"
 #include "ship_lrm/lrm/approach.hpp"
+#include "ship_lrm/lrm/approach_fluid.hpp"
 #include "ship_lrm/wake/wake_precompute.hpp"
 #include "temp_path.hpp"
 
@@ -22,6 +23,20 @@ const std::string& tiny_table() {
   }();
   return path;
 }
+
+// Forwards every request to a fluid side in this process and keeps them.
+class RecordingLink final : public lrm::InflowLink {
+ public:
+  explicit RecordingLink(std::shared_ptr<lrm::ApproachFluid> fluid) : fluid_(std::move(fluid)) {}
+  rotor::RotorInflow exchange(const lrm::InflowRequest& r) override {
+    requests.push_back(r);
+    return fluid_->serve(r);
+  }
+  std::vector<lrm::InflowRequest> requests;
+
+ private:
+  std::shared_ptr<lrm::ApproachFluid> fluid_;
+};
 
 lrm::ApproachConfig config(const std::string& inflow, double duration) {
   lrm::ApproachConfig c;
@@ -166,4 +181,53 @@ TEST(ShipApproach, RealTimeOnTimeIsTheSimulatedRunAndLateStepsArePittPeters) {
   }
   EXPECT_EQ(missed.realtime_inflow()->stats().deadline_misses, steps);
   EXPECT_GT(steps, 10);
+}
+
+// In real time a job that fell behind the wall clock covers many flight steps at once: RealTimeInflow
+// sums their dt and sends the newest state and pose. The ship moves at 5 m/s relative to the domain,
+// so a job of 100 flight steps (0.18 s) carries it 0.9 m, three quarters of a cell at N = 16. Such a
+// job must run its LBM steps one at a time with the walls placed at each step's time: the ship is
+// then re-voxelised as often as when the same flight is served request by request (placed once per
+// job it could be re-voxelised at most once per job), the fluid reaches the same time, and the
+// inflow stays close to the request-by-request one.
+TEST(ApproachFluid, LongJobsPlaceTheShipAtEveryLbmStep) {
+  lrm::ApproachConfig c = config("lrm", 0.9);
+  c.path.start_distance = 10.0;
+  c.path.height = 5.0;
+  const auto params = flight::load_default_bo105();
+  auto fluid = std::make_shared<lrm::ApproachFluid>(c, params);
+  auto link = std::make_shared<RecordingLink>(fluid);
+  lrm::ShipApproach run(c, params, link);
+  while (!run.done()) run.step();
+  const auto& requests = link->requests;
+  ASSERT_GT(requests.size(), 400u);
+
+  lrm::ApproachFluid merged(c, params);
+  const std::size_t per_job = 100;
+  std::size_t jobs = 0;
+  rotor::RotorInflow last;
+  for (std::size_t k = 0; k < requests.size();) {
+    lrm::InflowRequest job = requests[k];
+    if (job.kind == lrm::InflowRequest::Kind::Advance) {
+      double dt = 0;
+      std::size_t n = 0;
+      for (; n < per_job && k + n < requests.size() && requests[k + n].kind == lrm::InflowRequest::Kind::Advance; ++n)
+        dt += requests[k + n].dt;
+      job = requests[k + n - 1];
+      job.dt = dt;
+      k += n;
+      ++jobs;
+    } else {
+      ++k;
+    }
+    last = merged.serve(job);
+  }
+  const rotor::RotorInflow single = fluid->domain().inflow();
+  std::printf("voxelisations: request by request %zu, jobs of %zu: %zu (%zu jobs); fluid time %.6f %.6f s; mean inflow %g %g m/s\n",
+              fluid->voxelisations(), per_job, merged.voxelisations(), jobs, fluid->domain().time(), merged.domain().time(), single.mean.z(),
+              last.mean.z());
+  EXPECT_GE(fluid->voxelisations(), jobs + 2);  // the case moves the ship more often than there are jobs
+  EXPECT_NEAR(static_cast<double>(merged.voxelisations()), static_cast<double>(fluid->voxelisations()), 1.0);
+  EXPECT_EQ(merged.domain().time(), fluid->domain().time());
+  EXPECT_NEAR(last.mean.z(), single.mean.z(), 0.1 * std::abs(single.mean.z()));
 }

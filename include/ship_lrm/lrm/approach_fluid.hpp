@@ -22,6 +22,10 @@ class ApproachFluid {
   // Walls and faces for table time t and the domain's pose (no-op when already placed for t).
   void place(double table_time, const DomainPose& pose);
   // Places for the request, then resets or advances the LRM with its loads; the inflow over the disk.
+  // A request that covers several LBM steps (a real-time job that had fallen behind the wall clock
+  // and now catches up) runs them one at a time: walls and faces are placed at each step's time,
+  // with the pose, the table time and the rotor's motion interpolated between the previous request
+  // and this one, so that a moving ship is re-voxelised as often as in simulated time.
   rotor::RotorInflow serve(const InflowRequest& request);
 
   LrmDomain& domain() { return lrm_.domain(); }
@@ -35,6 +39,8 @@ class ApproachFluid {
   std::unique_ptr<WakeFaceFeed> feed_;
   bool placed_ = false;
   double placed_time_ = 0;
+  DomainPose placed_pose_;
+  rotor::RotorDiskState last_state_;  // the previous request's
   std::size_t face_refreshes_ = 0;
 };
 

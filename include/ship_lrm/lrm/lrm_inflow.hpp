@@ -38,6 +38,9 @@ class LrmInflow final : public rotor::InflowModel {
   rotor::RotorInflow inflow() const override { return inflow_; }
   bool needs_harmonics() const override { return true; }
 
+  // LBM steps an advance(state, dt) would run now (0 before the first reset).
+  long steps_due(double dt) const;
+
   LrmDomain& domain() { return domain_; }
   long lbm_steps() { return domain_.solver().steps_done(); }
   const CouplingTimes& times() const { return times_; }
