@@ -224,8 +224,8 @@ TEST(ApproachFluid, LongJobsPlaceTheShipAtEveryLbmStep) {
   }
   const rotor::RotorInflow single = fluid->domain().inflow();
   std::printf("voxelisations: request by request %zu, jobs of %zu: %zu (%zu jobs); fluid time %.6f %.6f s; mean inflow %g %g m/s\n",
-              fluid->voxelisations(), per_job, merged.voxelisations(), jobs, fluid->domain().time(), merged.domain().time(), single.mean.z(),
-              last.mean.z());
+              fluid->voxelisations(), per_job, merged.voxelisations(), jobs, fluid->domain().time(), merged.domain().time(),
+              single.mean.z(), last.mean.z());
   EXPECT_GE(fluid->voxelisations(), jobs + 2);  // the case moves the ship more often than there are jobs
   EXPECT_NEAR(static_cast<double>(merged.voxelisations()), static_cast<double>(fluid->voxelisations()), 1.0);
   EXPECT_EQ(merged.domain().time(), fluid->domain().time());
