@@ -63,7 +63,7 @@ rotor::RotorInflow ApproachFluid::serve(const InflowRequest& request) {
     for (long k = 1; k <= steps; ++k) {
       const double f = static_cast<double>(k) / static_cast<double>(steps);
       place(t0 + f * (request.table_time - t0), between(pose0, request.pose, f));
-      const double dt = k < steps ? f * request.dt - done : request.dt - done;
+      const double dt = f * request.dt - done;  // the last one ends exactly at request.dt (f = 1)
       lrm_.advance(between(state0, request.state, f), dt);
       done += dt;
     }
