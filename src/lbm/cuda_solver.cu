@@ -51,12 +51,6 @@ class DeviceArray {
 constexpr int kBlock = 128;
 unsigned blocks(std::size_t n) { return static_cast<unsigned>((n + kBlock - 1) / kBlock); }
 
-template <bool kOdd>
-__global__ void support_kernel(LatticeView v, const std::uint32_t* cells, const std::int32_t* bidx, const std::uint32_t* masks, int n) {
-  const int k = blockIdx.x * blockDim.x + threadIdx.x;
-  if (k < n) update_support_macro<kOdd>(v, cells[k], bidx[k], masks[k]);
-}
-
 template <bool kOdd, bool kSmagorinsky, int kForce>
 __global__ void fluid_kernel(LatticeView v, const std::uint32_t* __restrict__ masks) {
   const std::size_t c = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
@@ -65,16 +59,28 @@ __global__ void fluid_kernel(LatticeView v, const std::uint32_t* __restrict__ ma
   if (t == static_cast<std::uint8_t>(CellType::Fluid)) {
     int x, y, z;
     cell_coords(v, c, x, y, z);
-    update_bulk_cell<kOdd, kSmagorinsky, kForce>(v, c, v.row_offsets + Q * cell_class(v.n, x, y, z));
+    const std::int64_t* off = v.row_offsets + Q * cell_class(v.n, x, y, z);
+    // With open boundaries every fluid cell stores its state (aux): a flag per cell would cost
+    // about as much as the 16 bytes (the CPU backend stores only its support cells').
+    if (v.aux)
+      update_bulk_cell<kOdd, kSmagorinsky, kForce, true>(v, c, off);
+    else
+      update_bulk_cell<kOdd, kSmagorinsky, kForce, false>(v, c, off);
   } else if (t == (static_cast<std::uint8_t>(CellType::Fluid) | kGeneralBit)) {
     update_wall_cell<kOdd>(v, c, masks[c]);
   }
 }
 
 template <bool kOdd>
+__global__ void boundary_state_kernel(LatticeView v) {
+  const int b = blockIdx.x * blockDim.x + threadIdx.x;
+  if (b < v.nbnd) update_boundary_state<kOdd>(v, b);
+}
+
+template <bool kOdd, bool kSmagorinsky, int kForce>
 __global__ void boundary_kernel(LatticeView v) {
   const int b = blockIdx.x * blockDim.x + threadIdx.x;
-  if (b < v.nbnd) update_boundary_cell<kOdd>(v, b);
+  if (b < v.nbnd) update_boundary_cell<kOdd, kSmagorinsky, kForce>(v, b);
 }
 
 template <bool kOdd>
@@ -172,9 +178,6 @@ class CudaSolver final : public Solver {
     bnd_cell_.upload(lattice_.boundary_cells());
     bnd_normal_.upload(lattice_.boundary_normals());
     bnd_value_.upload(lattice_.boundary_values());
-    support_.upload(lattice_.support_cells());
-    support_b_.upload(lattice_.support_boundary_index());
-    support_m_.upload(lattice_.support_link_masks());
     bnd_mask_.upload(lattice_.boundary_link_masks());
     row_offsets_.upload(lattice_.row_offsets());
     link_mask_.upload(full_link_masks(lattice_));
@@ -282,33 +285,31 @@ class CudaSolver final : public Solver {
     check(cudaDeviceSynchronize(), "initialize");
   }
 
+  // The passes of a step (see update_boundary_state in lattice_view.hpp), in stream order.
+  template <bool kOdd, bool kSmagorinsky, int kForce>
+  void launch_step() {
+    fluid_kernel<kOdd, kSmagorinsky, kForce><<<blocks(view_.ncells), kBlock>>>(view_, link_mask_.data());
+    if (view_.nbnd) {
+      boundary_state_kernel<kOdd><<<blocks(view_.nbnd), kBlock>>>(view_);
+      boundary_kernel<kOdd, kSmagorinsky, kForce><<<blocks(view_.nbnd), kBlock>>>(view_);
+    }
+  }
   template <bool kOdd, bool kSmagorinsky>
-  void launch_fluid_forced(unsigned nb) {
+  void launch_step_forced() {
     switch (force_mode(view_)) {
       case kNoForce:
-        fluid_kernel<kOdd, kSmagorinsky, kNoForce><<<nb, kBlock>>>(view_, link_mask_.data());
-        break;
+        return launch_step<kOdd, kSmagorinsky, kNoForce>();
       case kUniformForce:
-        fluid_kernel<kOdd, kSmagorinsky, kUniformForce><<<nb, kBlock>>>(view_, link_mask_.data());
-        break;
+        return launch_step<kOdd, kSmagorinsky, kUniformForce>();
       case kForceField:
-        fluid_kernel<kOdd, kSmagorinsky, kForceField><<<nb, kBlock>>>(view_, link_mask_.data());
-        break;
+        return launch_step<kOdd, kSmagorinsky, kForceField>();
       default:
-        fluid_kernel<kOdd, kSmagorinsky, kFrameForce><<<nb, kBlock>>>(view_, link_mask_.data());
+        return launch_step<kOdd, kSmagorinsky, kFrameForce>();
     }
   }
   template <bool kOdd>
-  void launch_fluid(unsigned nb) {
-    view_.params.smagorinsky > 0.0f ? launch_fluid_forced<kOdd, true>(nb) : launch_fluid_forced<kOdd, false>(nb);
-  }
-
-  template <bool kOdd>
   void run_step() {
-    const int ns = static_cast<int>(support_.size());
-    if (ns) support_kernel<kOdd><<<blocks(ns), kBlock>>>(view_, support_.data(), support_b_.data(), support_m_.data(), ns);
-    launch_fluid<kOdd>(blocks(view_.ncells));
-    if (view_.nbnd) boundary_kernel<kOdd><<<blocks(view_.nbnd), kBlock>>>(view_);
+    view_.params.smagorinsky > 0.0f ? launch_step_forced<kOdd, true>() : launch_step_forced<kOdd, false>();
   }
   void do_step(bool odd) override {
     odd ? run_step<true>() : run_step<false>();
@@ -342,8 +343,7 @@ class CudaSolver final : public Solver {
   DeviceArray<pop_t> g_;
   DeviceArray<std::uint8_t> type_, tag_, bnd_normal_;
   DeviceArray<WallMotion> walls_;
-  DeviceArray<std::uint32_t> bnd_cell_, support_, support_m_, bnd_mask_;
-  DeviceArray<std::int32_t> support_b_;
+  DeviceArray<std::uint32_t> bnd_cell_, bnd_mask_;
   DeviceArray<float> bnd_value_, force_, aux_;
   DeviceArray<std::int64_t> row_offsets_;
   DeviceArray<std::uint32_t> link_mask_;  // per cell (read by cells off the bulk path only)

@@ -68,7 +68,6 @@ CellType open_cell_type(FaceType f) {
   return f == FaceType::VelocityInlet ? CellType::VelocityInlet
                                       : (f == FaceType::PressureOutlet ? CellType::PressureOutlet : CellType::ImpedanceOutlet);
 }
-bool is_open_face(FaceType f) { return f == FaceType::VelocityInlet || f == FaceType::PressureOutlet || f == FaceType::ImpedanceOutlet; }
 int open_priority(FaceType f) {
   return f == FaceType::VelocityInlet ? 3 : (f == FaceType::PressureOutlet ? 2 : (f == FaceType::ImpedanceOutlet ? 1 : 0));
 }
@@ -127,7 +126,7 @@ Lattice::Lattice(const LatticeConfig& cfg) : cfg_(cfg) {
                         ": a moving wall face must move tangentially (normal velocity component must be 0)");
     if (fc.type == FaceType::PressureOutlet && !(fc.density > 0.0f && fc.density < 2.0f))
       throw ConfigError(std::string("face ") + kFaceName[f] + ": outlet density must lie in (0, 2) lattice units");
-    if (is_open_face(fc.type) && n[f / 2] < 5)
+    if (open_face(fc.type) && n[f / 2] < 5)
       throw ConfigError(std::string("face ") + kFaceName[f] + ": open boundaries need at least 5 cells across the domain");
   }
   for (int a = 0; a < 3; ++a)
@@ -144,7 +143,7 @@ Lattice::Lattice(const LatticeConfig& cfg) : cfg_(cfg) {
           const bool on = (f % 2 == 0) ? p[f / 2] == 0 : p[f / 2] == n[f / 2] - 1;
           if (on && open_priority(cfg.faces[f].type) > open_priority(best)) best = cfg.faces[f].type;
         }
-        if (is_open_face(best)) type_[index(x, y, z)] = static_cast<std::uint8_t>(open_cell_type(best));
+        if (open_face(best)) type_[index(x, y, z)] = static_cast<std::uint8_t>(open_cell_type(best));
       }
 }
 
@@ -253,7 +252,7 @@ int Lattice::open_normal(int x, int y, int z) const {
   for (int f = 0; f < 6; ++f) {
     const bool on = (f % 2 == 0) ? p[f / 2] == 0 : p[f / 2] == n[f / 2] - 1;
     if (!on || cfg_.faces[f].type == FaceType::Periodic) continue;
-    const int score = (is_open_face(cfg_.faces[f].type) && open_cell_type(cfg_.faces[f].type) == t) ? 2 : 1;
+    const int score = (open_face(cfg_.faces[f].type) && open_cell_type(cfg_.faces[f].type) == t) ? 2 : 1;
     if (score > best_score) best = f, best_score = score;
   }
   return best;  // face index f = axis*2 + (outward normal > 0)
@@ -288,13 +287,54 @@ void Lattice::set_impedance_outlet(int x, int y, int z) {
   set_open(x, y, z, CellType::ImpedanceOutlet, {1.0f, 0.0f, 0.0f, 0.0f});
 }
 
+// Support set of the open boundaries, the cells whose state (aux) their update reads: every
+// fluid-like cell within two cells along an axis of an open-boundary cell (velocity_gradient and
+// the outlets' interior neighbours) and, at edges and corners of open faces, the two inward
+// diagonal neighbours (open_edge_neighbour). Open-boundary cells are in it too.
+std::vector<char> Lattice::support_marks() const {
+  const int n[3] = {cfg_.nx, cfg_.ny, cfg_.nz};
+  std::vector<char> mark(cells(), 0);
+  auto mark_fluid = [&](const int p[3]) {
+    const std::size_t q = index(p[0], p[1], p[2]);
+    if (!is_wall(static_cast<CellType>(type_[q] & ~kGeneralBit))) mark[q] = 1;
+  };
+  for (int z = 0; z < n[2]; ++z)
+    for (int y = 0; y < n[1]; ++y)
+      for (int x = 0; x < n[0]; ++x) {
+        if (!is_open_boundary(static_cast<CellType>(type_[index(x, y, z)] & ~kGeneralBit))) continue;
+        const int p0[3] = {x, y, z};
+        int step[3] = {0, 0, 0}, faces = 0;
+        for (int a = 0; a < 3; ++a) {
+          if (p0[a] == 0 && open_face(cfg_.faces[2 * a].type))
+            step[a] = 1;
+          else if (p0[a] == n[a] - 1 && open_face(cfg_.faces[2 * a + 1].type))
+            step[a] = -1;
+          faces += step[a] != 0;
+          for (int d = -2; d <= 2; ++d) {
+            int p[3] = {x, y, z};
+            p[a] += d;
+            if (p[a] < 0 || p[a] >= n[a]) {
+              if (cfg_.faces[2 * a + (p[a] >= 0 ? 1 : 0)].type != FaceType::Periodic) continue;
+              p[a] = (p[a] + n[a]) % n[a];
+            }
+            mark_fluid(p);
+          }
+        }
+        for (int k = 1; k <= 2 && faces >= 2; ++k) {
+          const int p[3] = {x + k * step[0], y + k * step[1], z + k * step[2]};
+          if (p[0] >= 0 && p[0] < n[0] && p[1] >= 0 && p[1] < n[1] && p[2] >= 0 && p[2] < n[2]) mark_fluid(p);
+        }
+      }
+  return mark;
+}
+
 void Lattice::finalize() {
   if (finalized_) return;
   const int n[3] = {cfg_.nx, cfg_.ny, cfg_.nz};
   std::unordered_map<std::uint32_t, std::array<float, 4>> values;
   for (const auto& [c, v] : explicit_values_) values[c] = v;
-  std::vector<std::int32_t> bnd_of(cells(), -1);
   row_offsets_ = bulk_class_offsets(n);
+  const std::vector<char> support = support_marks();
   for (int z = 0; z < n[2]; ++z)
     for (int y = 0; y < n[1]; ++y)
       for (int x = 0; x < n[0]; ++x) {
@@ -304,7 +344,6 @@ void Lattice::finalize() {
         tag_[c] = reflection_mode(x, y, z);
         if (is_open_boundary(t)) {
           const int f = open_normal(x, y, z);
-          bnd_of[c] = static_cast<std::int32_t>(bnd_cell_.size());
           bnd_cell_.push_back(static_cast<std::uint32_t>(c));
           bnd_normal_.push_back(static_cast<std::uint8_t>(f));
           bnd_mask_.push_back(link_mask(x, y, z));
@@ -326,6 +365,7 @@ void Lattice::finalize() {
         // (mask 0) are segments too. Cells next to moving walls take the checked path.
         const std::uint32_t mask = link_mask(x, y, z);
         const std::uint32_t cls = static_cast<std::uint32_t>(cell_class(n, x, y, z));
+        const std::uint8_t store = support[c] ? 1 : 0;
         if (mask != 0) type_[c] |= kGeneralBit;  // the GPU kernel's checked path
         if (mask & kMovingWallLink) {
           general_.push_back(static_cast<std::uint32_t>(c));
@@ -333,37 +373,12 @@ void Lattice::finalize() {
           continue;
         }
         Segment* last = segments_.empty() ? nullptr : &segments_.back();
-        if (last && last->first + last->count == c && last->cell_class == cls && last->link_mask == mask && last->reflection == tag_[c])
+        if (last && last->first + last->count == c && last->cell_class == cls && last->link_mask == mask && last->reflection == tag_[c] &&
+            last->store_state == store)
           ++last->count;
         else
-          segments_.push_back({static_cast<std::uint32_t>(c), 1, cls, mask, tag_[c]});
+          segments_.push_back({static_cast<std::uint32_t>(c), 1, cls, mask, tag_[c], store});
       }
-  // Support set of the open boundaries: every fluid-like cell within two cells along an axis.
-  if (!bnd_cell_.empty()) {
-    std::vector<char> mark(cells(), 0);
-    for (std::uint32_t c : bnd_cell_) {
-      const int p0[3] = {static_cast<int>(c % n[0]), static_cast<int>((c / n[0]) % n[1]),
-                         static_cast<int>(c / (static_cast<std::size_t>(n[0]) * n[1]))};
-      for (int a = 0; a < 3; ++a)
-        for (int d = -2; d <= 2; ++d) {
-          int p[3] = {p0[0], p0[1], p0[2]};
-          p[a] += d;
-          if (p[a] < 0 || p[a] >= n[a]) {
-            if (cfg_.faces[2 * a].type != FaceType::Periodic) continue;
-            p[a] = (p[a] + n[a]) % n[a];
-          }
-          const std::size_t q = index(p[0], p[1], p[2]);
-          if (!is_wall(static_cast<CellType>(type_[q] & ~kGeneralBit))) mark[q] = 1;
-        }
-    }
-    for (std::size_t c = 0; c < cells(); ++c)
-      if (mark[c]) {
-        support_.push_back(static_cast<std::uint32_t>(c));
-        support_bnd_.push_back(bnd_of[c]);
-        support_mask_.push_back(link_mask(static_cast<int>(c % n[0]), static_cast<int>((c / n[0]) % n[1]),
-                                          static_cast<int>(c / (static_cast<std::size_t>(n[0]) * n[1]))));
-      }
-  }
   finalized_ = true;
 }
 

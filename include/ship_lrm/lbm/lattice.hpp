@@ -48,12 +48,15 @@ constexpr float kMaxSetupMach = 0.4f;
 // A contiguous run of fluid cells along x with the same cell class (neighbour offsets, see
 // cell_class in lattice_view.hpp), link mask (which neighbours are resting walls or outside) and
 // reflection rule: the CPU backend streams a segment with one table of addresses, vectorised.
+// store_state: the cells are in the open boundaries' support set, so their update also stores
+// their pre-collision state (aux) for the boundary passes.
 struct Segment {
   std::uint32_t first;
   std::uint32_t count;
   std::uint32_t cell_class;
   std::uint32_t link_mask;
   std::uint8_t reflection;
+  std::uint8_t store_state;
 };
 
 class Lattice {
@@ -97,16 +100,13 @@ class Lattice {
   const std::vector<Segment>& bulk_segments() const { return segments_; }
   // Fluid cells next to moving walls (checked streaming path on the CPU).
   const std::vector<std::uint32_t>& general_cells() const { return general_; }
-  // Link masks (see gather_masked in lattice_view.hpp) of the general, boundary and support cells.
+  // Link masks (see gather_masked in lattice_view.hpp) of the general and boundary cells.
   const std::vector<std::uint32_t>& general_link_masks() const { return general_mask_; }
   // Neighbour offsets of bulk cells, Q per cell class (see cell_class in lattice_view.hpp).
   const std::vector<std::int64_t>& row_offsets() const { return row_offsets_; }
   const std::vector<std::uint32_t>& boundary_cells() const { return bnd_cell_; }
   const std::vector<std::uint8_t>& boundary_normals() const { return bnd_normal_; }
   const std::vector<float>& boundary_values() const { return bnd_value_; }  // 4 per boundary cell
-  const std::vector<std::uint32_t>& support_cells() const { return support_; }
-  const std::vector<std::int32_t>& support_boundary_index() const { return support_bnd_; }
-  const std::vector<std::uint32_t>& support_link_masks() const { return support_mask_; }
   const std::vector<std::uint32_t>& boundary_link_masks() const { return bnd_mask_; }
 
  private:
@@ -115,6 +115,7 @@ class Lattice {
   std::uint32_t link_mask(int x, int y, int z) const;
   void set_open(int x, int y, int z, CellType t, const std::array<float, 4>& value);
   int open_normal(int x, int y, int z) const;  // outward normal code, or -1 if not on an open-able face
+  std::vector<char> support_marks() const;
 
   LatticeConfig cfg_;
   std::vector<std::uint8_t> type_, tag_;
@@ -122,8 +123,7 @@ class Lattice {
   std::vector<WallMotion> walls_;
   bool finalized_ = false;
   std::vector<Segment> segments_;
-  std::vector<std::uint32_t> general_, general_mask_, bnd_cell_, bnd_mask_, support_, support_mask_;
-  std::vector<std::int32_t> support_bnd_;
+  std::vector<std::uint32_t> general_, general_mask_, bnd_cell_, bnd_mask_;
   std::vector<std::uint8_t> bnd_normal_;
   std::vector<std::int64_t> row_offsets_;
   std::vector<float> bnd_value_;

@@ -42,7 +42,7 @@ struct LatticeView {
   const std::uint32_t* bnd_mask = nullptr;   // link mask of b (see gather_masked)
   const float* bnd_value =
       nullptr;           // 4 * nbnd: inlet velocity (3) | outlet density ([0]) | impedance: reference velocity (3), its normal change ([3])
-  float* aux = nullptr;  // macroscopic state of open-boundary support cells, SoA 4 * ncells
+  float* aux = nullptr;  // state (rho, u) of the open boundaries' support cells, SoA 4 * ncells
   const std::int64_t* row_offsets = nullptr;  // 27 * Q neighbour offsets of bulk cells per cell class
 };
 
@@ -77,22 +77,41 @@ SHIP_LRM_HD void cell_coords(const LatticeView& v, std::size_t c, int& x, int& y
   z = static_cast<int>(r / v.n[1]);
 }
 
-// Force density F on cell c and the state (density, velocity with the Guo half-force shift) that
-// enters its collision, from its pre-collision populations g: the moments are summed once, since
-// the frame's fictitious forces need them too.
+// Force density on cell c before the frame's fictitious forces: the uniform force and the field.
 template <int kForce>
-SHIP_LRM_HD Macro cell_state(const LatticeView& v, std::size_t c, const float g[Q], float F[3]) {
+SHIP_LRM_HD void base_force(const LatticeView& v, std::size_t c, float F[3]) {
   const bool field = kForce == kForceField || (kForce == kFrameForce && v.force != nullptr);
   for (int a = 0; a < 3; ++a) F[a] = (kForce == kNoForce ? 0.0f : v.uniform_force[a]) + (field ? v.force[a * v.ncells + c] : 0.0f);
+}
+
+// The state (density, velocity with the Guo half-force shift) that enters a cell's collision, from
+// its pre-collision populations g; F holds its base_force and is completed with the frame's
+// fictitious forces at the cell's position p (used with kFrameForce only). The moments are summed
+// once, since the fictitious forces need them too.
+template <int kForce>
+SHIP_LRM_HD Macro collision_state(const LatticeView& v, const float p[3], const float g[Q], float F[3]) {
   float rho, j[3];
   moments(g, rho, j);
-  if (kForce == kFrameForce) {
-    int x, y, z;
-    cell_coords(v, c, x, y, z);
-    const float p[3] = {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
-    add_frame_force(v.frame, p, rho, j, F);
-  }
+  if (kForce == kFrameForce) add_frame_force(v.frame, p, rho, j, F);
   return macro_from_moments(rho, j, F);
+}
+
+// Position of cell c in lattice units (the frame's fictitious forces depend on it).
+SHIP_LRM_HD void cell_position(const LatticeView& v, std::size_t c, float p[3]) {
+  int x, y, z;
+  cell_coords(v, c, x, y, z);
+  p[0] = static_cast<float>(x);
+  p[1] = static_cast<float>(y);
+  p[2] = static_cast<float>(z);
+}
+
+// Force density F on cell c and the state that enters its collision (collision_state).
+template <int kForce>
+SHIP_LRM_HD Macro cell_state(const LatticeView& v, std::size_t c, const float g[Q], float F[3]) {
+  base_force<kForce>(v, c, F);
+  float p[3] = {0.0f, 0.0f, 0.0f};
+  if (kForce == kFrameForce) cell_position(v, c, p);
+  return collision_state<kForce>(v, p, g, F);
 }
 SHIP_LRM_HD int force_mode(const LatticeView& v) {
   if (v.frame_active) return kFrameForce;
@@ -209,15 +228,28 @@ SHIP_LRM_HD void scatter(const LatticeView& v, int x, int y, int z, std::size_t 
   }
 }
 
+SHIP_LRM_HD Macro load_aux(const LatticeView& v, std::size_t c) {
+  Macro m;
+  m.rho = v.aux[c];
+  for (int a = 0; a < 3; ++a) m.u[a] = v.aux[(a + 1) * v.ncells + c];
+  return m;
+}
+SHIP_LRM_HD void store_aux(const LatticeView& v, std::size_t c, const Macro& m) {
+  v.aux[c] = m.rho;
+  for (int a = 0; a < 3; ++a) v.aux[(a + 1) * v.ncells + c] = m.u[a];
+}
+
 // Bulk cells: all 18 neighbours are fluid-like cells; the neighbour at c_i is c + off[i] (offsets
-// of the cell's class, no checks; the source at -c_i is c + off[opp(i)]).
-template <bool kOdd, bool kSmagorinsky, int kForce>
+// of the cell's class, no checks; the source at -c_i is c + off[opp(i)]). kStoreState: also store
+// the pre-collision state in aux (a support cell of the open boundaries; see update_boundary_state).
+template <bool kOdd, bool kSmagorinsky, int kForce, bool kStoreState = false>
 SHIP_LRM_HD void update_bulk_cell(const LatticeView& v, std::size_t c, const std::int64_t* off) {
   float g[Q];
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) g[i] = kOdd ? load_pop(pop(v, d3q19::opp(i), c + off[d3q19::opp(i)])) : load_pop(pop(v, i, c));
   float F[3];
   const Macro m = cell_state<kForce>(v, c, g, F);
+  if (kStoreState) store_aux(v, c, m);
   relax<kSmagorinsky, kForce != kNoForce>(g, m, F, v.params);
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) {
@@ -248,13 +280,14 @@ SHIP_LRM_HD void segment_addresses(const LatticeView& v, std::uint32_t mask, int
 }
 
 // Update of one cell of a segment (branch-free: the loop over a segment vectorises).
-template <bool kSmagorinsky, int kForce>
+template <bool kSmagorinsky, int kForce, bool kStoreState = false>
 SHIP_LRM_HD void update_segment_cell(const LatticeView& v, std::size_t c, pop_t* const src[Q], pop_t* const dst[Q]) {
   float g[Q];
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) g[i] = load_pop(src[i][c]);
   float F[3];
   const Macro m = cell_state<kForce>(v, c, g, F);
+  if (kStoreState) store_aux(v, c, m);
   relax<kSmagorinsky, kForce != kNoForce>(g, m, F, v.params);
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) dst[i][c] = store_pop(g[i]);
@@ -311,29 +344,21 @@ SHIP_LRM_HD void scatter_cell(const LatticeView& v, std::size_t c, int x, int y,
     scatter_masked<kOdd>(v, c, mask, v.row_offsets + Q * cell_class(v.n, x, y, z), g);
 }
 
-// Fluid cell next to walls or non-periodic faces, with its link mask.
+// Fluid cell next to walls or non-periodic faces, with its link mask. With open boundaries (aux)
+// its pre-collision state is stored too, as the bulk cells' (few cells; not worth a flag).
 template <bool kOdd>
 SHIP_LRM_HD void update_wall_cell(const LatticeView& v, std::size_t c, std::uint32_t mask) {
   int x, y, z;
   cell_coords(v, c, x, y, z);
   float g[Q], F[3];
   gather_cell<kOdd>(v, c, x, y, z, mask, g);
-  relax(g, cell_state(v, c, g, F), F, v.params);
+  const Macro m = cell_state(v, c, g, F);
+  if (v.aux) store_aux(v, c, m);
+  relax(g, m, F, v.params);
   scatter_cell<kOdd>(v, c, x, y, z, mask, g);
 }
 
 // ---- Open boundaries -------------------------------------------------------------------------
-
-SHIP_LRM_HD Macro load_aux(const LatticeView& v, std::size_t c) {
-  Macro m;
-  m.rho = v.aux[c];
-  for (int a = 0; a < 3; ++a) m.u[a] = v.aux[(a + 1) * v.ncells + c];
-  return m;
-}
-SHIP_LRM_HD void store_aux(const LatticeView& v, std::size_t c, const Macro& m) {
-  v.aux[c] = m.rho;
-  for (int a = 0; a < 3; ++a) v.aux[(a + 1) * v.ncells + c] = m.u[a];
-}
 
 // Macroscopic state at open-boundary cell b from its gathered populations (unknown populations
 // hold bounce-back placeholders and are not used), thesis 6.1.3. prev: the state one step ago.
@@ -454,17 +479,31 @@ SHIP_LRM_HD Macro fluid_macro(const LatticeView& v, std::size_t c) {
   return cell_state(v, c, g, F);
 }
 
-// Pass 1 of a step with open boundaries: state of support cell c (b >= 0 for boundary cells).
+// Pre-collision state of a fluid-like neighbour c of an open-boundary cell during pass 1: the state
+// its fluid update stored in aux (c is in the support set), or, for another open-boundary cell,
+// from its populations, which only its own pass 2 overwrites.
 template <bool kOdd>
-SHIP_LRM_HD void update_support_macro(const LatticeView& v, std::size_t c, int b, std::uint32_t mask) {
+SHIP_LRM_HD Macro support_state(const LatticeView& v, std::size_t c) {
+  return is_open_boundary(static_cast<CellType>(v.type[c] & ~kGeneralBit)) ? fluid_macro<kOdd>(v, c) : load_aux(v, c);
+}
+
+// A step with open boundaries (thesis 6.1.3) runs in three passes, each over all cells of its kind
+// before the next begins:
+//   0. the fluid cells (update_bulk_cell, update_segment_cell, update_wall_cell); the support cells
+//      among them store their pre-collision state in aux;
+//   1. update_boundary_state: the state (rho, u) of every open-boundary cell, from its known
+//      populations, its state one step ago and its interior neighbours' states;
+//   2. update_boundary_cell: each open-boundary cell rebuilt from its state and the velocity
+//      gradient of the states around it, collided and streamed.
+// Every population slot is read and written by one cell only in a step (AA pattern), so pass 0
+// leaves the open-boundary cells' populations as they were.
+template <bool kOdd>
+SHIP_LRM_HD void update_boundary_state(const LatticeView& v, int b) {
+  const std::size_t c = v.bnd_cell[b];
   int x, y, z;
   cell_coords(v, c, x, y, z);
-  float g[Q], F[3];
-  gather_cell<kOdd>(v, c, x, y, z, mask, g);
-  if (b < 0) {
-    store_aux(v, c, cell_state(v, c, g, F));
-    return;
-  }
+  float g[Q];
+  gather_cell<kOdd>(v, c, x, y, z, v.bnd_mask[b], g);
   Macro m = boundary_macro(v, b, g, load_aux(v, c));
   const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
   std::size_t in;
@@ -475,8 +514,8 @@ SHIP_LRM_HD void update_support_macro(const LatticeView& v, std::size_t c, int b
     // across the other face, so take what is not prescribed from the inward diagonal neighbours
     // (extrapolation, as in Guo, Zheng & Shi 2002, Chinese Physics 11, 366; the velocity linearly,
     // which keeps the linear field of a rotating domain) and reconstruct the cell in pass 2.
-    const Macro mi = fluid_macro<kOdd>(v, diag);
-    const Macro mi2 = diag2 == diag ? mi : fluid_macro<kOdd>(v, diag2);
+    const Macro mi = support_state<kOdd>(v, diag);
+    const Macro mi2 = diag2 == diag ? mi : support_state<kOdd>(v, diag2);
     if (t != CellType::PressureOutlet) m.rho = mi.rho;
     if (t != CellType::VelocityInlet)
       for (int a = 0; a < 3; ++a) m.u[a] = 2.0f * mi.u[a] - mi2.u[a];
@@ -489,11 +528,11 @@ SHIP_LRM_HD void update_support_macro(const LatticeView& v, std::size_t c, int b
     // Where the flow enters (u.n < 0) the tangential velocity comes from outside instead: the
     // reference flow's (characteristic reasoning: vorticity is carried inwards; Poinsot & Lele 1992,
     // J. Comput. Phys. 101, 104, table IV).
-    const Macro mi = fluid_macro<kOdd>(v, in);
+    const Macro mi = support_state<kOdd>(v, in);
     std::size_t in2;
     const bool second =
         support_cell(v, x, y, z, axis, -2 * sgn, in2) && !is_open_boundary(static_cast<CellType>(v.type[in2] & ~kGeneralBit));
-    const Macro mi2 = second ? fluid_macro<kOdd>(v, in2) : mi;
+    const Macro mi2 = second ? support_state<kOdd>(v, in2) : mi;
     const bool inflow = v.face_inflow_reference[v.bnd_normal[b]] && sgn * m.u[axis] < 0.0f;
     for (int a = 0; a < 3; ++a)
       if (a != axis) m.u[a] = inflow ? v.bnd_value[4 * b + a] : 2.0f * mi.u[a] - mi2.u[a];
@@ -501,37 +540,74 @@ SHIP_LRM_HD void update_support_macro(const LatticeView& v, std::size_t c, int b
     // Neumann-type outflow (thesis 6.1.3): the velocity of the interior neighbour (zero normal
     // gradient) at the same time level, with the prescribed density. Taking u from the known
     // populations instead (Zou & He) is unstable next to no-slip walls.
-    const Macro mi = fluid_macro<kOdd>(v, in);
+    const Macro mi = support_state<kOdd>(v, in);
     for (int a = 0; a < 3; ++a) m.u[a] = mi.u[a];
   }
   store_aux(v, c, m);
 }
 
-// Pass 2: update of open-boundary cell b (after pass 1 over all support cells).
-template <bool kOdd>
-SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
+// Pass 2 (after pass 1 over all open-boundary cells). Every open-boundary cell is rebuilt from its
+// state (rho, u) and the velocity gradient (Latt et al. 2008). The impedance outlet's state comes from
+// eq. 6.15; the thesis completes it with the non-equilibrium bounce-back of the unknown populations,
+// which disturbed a uniform stream running along an impedance face (top and bottom of the LRM
+// domain) by several per cent; the full reconstruction keeps it exact and still absorbs an acoustic
+// pulse (tests in test_boundaries.cpp). The old populations are not needed.
+// In three parts, so that the CPU backend can vectorise the arithmetic over many cells:
+// boundary_strain (neighbour look-ups), boundary_collide (per cell arithmetic), scatter_cell.
+
+// Strain rate S = (grad u + grad u^T) / 2 (xx yy zz xy xz yz) at open-boundary cell b.
+SHIP_LRM_HD void boundary_strain(const LatticeView& v, int b, float S[6]) {
   const std::size_t c = v.bnd_cell[b];
   int x, y, z;
   cell_coords(v, c, x, y, z);
-  float g[Q], F[3];
-  gather_cell<kOdd>(v, c, x, y, z, v.bnd_mask[b], g);
-  const Macro m = load_aux(v, c);
-  // Every open-boundary cell is rebuilt from its state (rho, u) and the velocity gradient (Latt et al.
-  // 2008). The impedance outlet's state comes from eq. 6.15; the thesis completes it with the
-  // non-equilibrium bounce-back of the unknown populations, which disturbed a uniform stream running
-  // along an impedance face (top and bottom of the LRM domain) by several per cent; the full
-  // reconstruction keeps it exact and still absorbs an acoustic pulse (tests in test_boundaries.cpp).
   float grad[3][3];
   velocity_gradient(v, x, y, z, c, grad);
-  const float S[6] = {grad[0][0],
-                      grad[1][1],
-                      grad[2][2],
-                      0.5f * (grad[0][1] + grad[1][0]),
-                      0.5f * (grad[0][2] + grad[2][0]),
-                      0.5f * (grad[1][2] + grad[2][1])};
-  reconstruct_fd(g, m.rho, m.u, S, omega_from_nu(v.params.nu));
-  relax(g, cell_state(v, c, g, F), F, v.params);
+  S[0] = grad[0][0];
+  S[1] = grad[1][1];
+  S[2] = grad[2][2];
+  S[3] = 0.5f * (grad[0][1] + grad[1][0]);
+  S[4] = 0.5f * (grad[0][2] + grad[2][0]);
+  S[5] = 0.5f * (grad[1][2] + grad[2][1]);
+}
+
+// Streams the post-collision populations g of open-boundary cell b.
+template <bool kOdd>
+SHIP_LRM_HD void scatter_boundary_cell(const LatticeView& v, int b, const float g[Q]) {
+  const std::size_t c = v.bnd_cell[b];
+  int x, y, z;
+  cell_coords(v, c, x, y, z);
   scatter_cell<kOdd>(v, c, x, y, z, v.bnd_mask[b], g);
+}
+
+// Inputs of boundary_collide for open-boundary cell b: its state m (from pass 1), strain rate S, base
+// force F and position p.
+template <int kForce>
+SHIP_LRM_HD void boundary_inputs(const LatticeView& v, int b, Macro& m, float S[6], float F[3], float p[3]) {
+  const std::size_t c = v.bnd_cell[b];
+  m = load_aux(v, c);
+  boundary_strain(v, b, S);
+  base_force<kForce>(v, c, F);
+  p[0] = p[1] = p[2] = 0.0f;
+  if (kForce == kFrameForce) cell_position(v, c, p);
+}
+
+// Post-collision populations g of an open-boundary cell rebuilt from boundary_inputs (no access to
+// the lattice's per-cell arrays, so that a loop over cells vectorises without gathers).
+template <bool kSmagorinsky, int kForce>
+SHIP_LRM_HD void boundary_collide(const LatticeView& v, const Macro& m, const float S[6], const float F0[3], const float p[3], float g[Q]) {
+  float F[3] = {F0[0], F0[1], F0[2]};
+  reconstruct_fd(g, m.rho, m.u, S, omega_from_nu(v.params.nu));
+  relax<kSmagorinsky, kForce != kNoForce>(g, collision_state<kForce>(v, p, g, F), F, v.params);
+}
+
+// Pass 2 for one open-boundary cell b, with the model and force as template parameters.
+template <bool kOdd, bool kSmagorinsky, int kForce>
+SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
+  Macro m;
+  float S[6], F[3], p[3], g[Q];
+  boundary_inputs<kForce>(v, b, m, S, F, p);
+  boundary_collide<kSmagorinsky, kForce>(v, m, S, F, p, g);
+  scatter_boundary_cell<kOdd>(v, b, g);
 }
 
 // Divergence guard, local and cheap: density and speed of cell c from its own 19 slots. Between
