@@ -94,18 +94,39 @@ void LrmDomain::update_walls() {
   std::vector<bool> clear(walls_.size());
   for (size_t w = 0; w < walls_.size(); ++w) clear[w] = walls_[w]->clear_of_faces();
   const int lo = 2, hi = edge_ - 3;  // the two outermost layers on every side
+  // Blocks of kB^3 cells: a wall whose distance at the block's centre exceeds the distance to the
+  // block's farthest cell centre misses (or, below minus that, fills) the whole block, since a signed
+  // distance changes by at most the distance moved (WallSurface). Only blocks a surface passes
+  // through are voxelised cell by cell; the result is the same as cell by cell everywhere.
+  constexpr int kB = 4;
+  const double reach = std::sqrt(3.0) * 0.5 * (kB - 1) * units_.dx() * (1.0 + 1e-9) + 1e-12;
   std::size_t count = 0;
-  for (int k = 0; k < edge_; ++k)
-    for (int j = 0; j < edge_; ++j)
-      for (int i = 0; i < edge_; ++i) {
-        const Vec3 p = position(i, j, k);
-        const bool outer = i < lo || j < lo || k < lo || i > hi || j > hi || k > hi;
-        for (size_t w = 0; w < walls_.size(); ++w)
-          if (!(outer && clear[w]) && walls_[w]->signed_distance(p) < 0.0) {
-            owner[i + static_cast<std::size_t>(edge_) * (j + static_cast<std::size_t>(edge_) * k)] = static_cast<std::int16_t>(w);
-            ++count;
-            break;
-          }
+  std::vector<signed char> state(walls_.size());  // per block: +1 misses, -1 fills, 0 cell by cell
+  for (int k0 = 0; k0 < edge_; k0 += kB)
+    for (int j0 = 0; j0 < edge_; j0 += kB)
+      for (int i0 = 0; i0 < edge_; i0 += kB) {
+        const int i1 = std::min(i0 + kB, edge_), j1 = std::min(j0 + kB, edge_), k1 = std::min(k0 + kB, edge_);
+        const Vec3 centre = 0.5 * (position(i0, j0, k0) + position(i1 - 1, j1 - 1, k1 - 1));
+        bool any = false;
+        for (size_t w = 0; w < walls_.size(); ++w) {
+          const double d = walls_[w]->signed_distance(centre);
+          state[w] = d > reach ? 1 : (d < -reach ? -1 : 0);
+          any = any || state[w] != 1;
+        }
+        if (!any) continue;
+        for (int k = k0; k < k1; ++k)
+          for (int j = j0; j < j1; ++j)
+            for (int i = i0; i < i1; ++i) {
+              const bool outer = i < lo || j < lo || k < lo || i > hi || j > hi || k > hi;
+              for (size_t w = 0; w < walls_.size(); ++w) {
+                if (state[w] == 1 || (outer && clear[w])) continue;
+                if (state[w] == -1 || walls_[w]->signed_distance(position(i, j, k)) < 0.0) {
+                  owner[i + static_cast<std::size_t>(edge_) * (j + static_cast<std::size_t>(edge_) * k)] = static_cast<std::int16_t>(w);
+                  ++count;
+                  break;
+                }
+              }
+            }
       }
   for (size_t k = 0; k < disk_cells_.size(); ++k)
     if (owner[disk_cells_[k]] >= 0)

@@ -25,6 +25,8 @@ class WallSurface {
   virtual ~WallSurface() = default;
   virtual std::string name() const = 0;
   // Signed distance (m) from p (m, mr axes, from the hub) to the surface; negative inside the solid.
+  // It may underestimate the distance but must change by no more than p moves (|gradient| <= 1):
+  // the voxelisation skips blocks of cells on that bound (LrmDomain::update_walls).
   virtual double signed_distance(const Vec3& p) const = 0;
   // Motion relative to the domain; a body fixed to the rotorcraft (the fuselage) has none.
   virtual RigidMotion motion() const { return {}; }

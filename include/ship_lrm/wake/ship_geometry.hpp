@@ -44,7 +44,8 @@ class ShipGeometry {
   virtual ~ShipGeometry() = default;
   virtual std::string name() const = 0;
   // Signed distance (m) from p (ship frame) to the surface; negative inside the ship. For the
-  // parametric shapes outside the solid it is a lower bound near edges (the sign is exact).
+  // parametric shapes outside the solid it is a lower bound near edges (the sign is exact). It
+  // changes by no more than p moves (|gradient| <= 1), which the LRM's voxelisation relies on.
   virtual double signed_distance(const Vec3& p) const = 0;
   virtual bool inside(const Vec3& p) const { return signed_distance(p) < 0.0; }
   virtual const ShipDatum& datum() const = 0;
