@@ -34,6 +34,7 @@ ShipApproach::ShipApproach(const ApproachConfig& cfg, const flight::HelicopterPa
   if (cfg_.inflow == "lrm") {
     if (!link) {
       fluid_ = std::make_shared<ApproachFluid>(cfg_, params, table_);
+      if (realtime) fluid_->set_catch_up_limit(kRealTimeCatchUpSteps);
       link = std::make_shared<DirectLink>(fluid_);
     }
     auto model = std::make_unique<LinkedInflow>(std::move(link), [this](double t, DomainPose& pose, double& table_t) {

@@ -60,7 +60,14 @@ rotor::RotorInflow ApproachFluid::serve(const InflowRequest& request) {
     const DomainPose pose0 = placed_pose_;
     const rotor::RotorDiskState state0 = last_state_;
     double done = 0;
-    for (long k = 1; k <= steps; ++k) {
+    long first = 1;
+    const long limit = lrm_.catch_up_limit();
+    if (limit > 0 && steps > limit) {  // a real-time backlog: drop all but the newest `limit` steps
+      first = steps - limit + 1;
+      done = static_cast<double>(first - 1) / static_cast<double>(steps) * request.dt;
+      lrm_.skip(done);
+    }
+    for (long k = first; k <= steps; ++k) {
       const double f = static_cast<double>(k) / static_cast<double>(steps);
       place(t0 + f * (request.table_time - t0), between(pose0, request.pose, f));
       const double dt = f * request.dt - done;  // the last one ends exactly at request.dt (f = 1)

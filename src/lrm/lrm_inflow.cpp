@@ -55,10 +55,24 @@ long LrmInflow::steps_due(double dt) const {
   return static_cast<long>(std::floor((time_ + dt - domain_.time()) / domain_.time_step() + 0.5));
 }
 
+void LrmInflow::skip(double dt) {
+  if (!started_ || !(dt > 0)) return;
+  const long n = steps_due(dt);
+  time_ += dt;
+  domain_.skip_steps(n);
+  if (n > 0) dropped_steps_ += n;
+}
+
 void LrmInflow::advance(const rotor::RotorDiskState& state, double dt) {
   if (!started_) reset(state);
   take(state, &times_);
-  const long n = steps_due(dt);
+  long n = steps_due(dt);
+  if (catch_up_limit_ > 0 && n > catch_up_limit_) {  // drop the backlog: only the newest steps run
+    const double dropped = dt * static_cast<double>(n - catch_up_limit_) / static_cast<double>(n);
+    skip(dropped);
+    dt -= dropped;
+    n = steps_due(dt);
+  }
   time_ += dt;
   if (n <= 0) return;  // a coarse lattice steps less often; the last inflow holds meanwhile
   auto t = Clock::now();

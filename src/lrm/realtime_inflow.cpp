@@ -16,6 +16,7 @@ RealTimeInflow::RealTimeInflow(std::unique_ptr<rotor::InflowModel> slow, double 
 
 std::unique_ptr<RealTimeInflow> make_realtime_lrm(const LrmConfig& cfg, double warm_up, double budget, RealTimeMode mode) {
   auto lrm = std::make_unique<LrmInflow>(cfg, warm_up);
+  lrm->set_catch_up_limit(kRealTimeCatchUpSteps);
   const double interval = lrm->domain().time_step();
   return std::make_unique<RealTimeInflow>(std::move(lrm), interval, budget, mode);
 }
@@ -65,6 +66,11 @@ RealTimeStats RealTimeInflow::stats() const {
   return stats_;
 }
 
+void RealTimeInflow::wait_idle() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  result_ready_.wait(lock, [this] { return !busy_ && !has_job_; });
+}
+
 void RealTimeInflow::reset(const rotor::RotorDiskState& state) {
   std::unique_lock<std::mutex> lock(mutex_);
   result_ready_.wait(lock, [this] { return !busy_ && !has_job_; });  // the LRM thread is idle
@@ -73,7 +79,8 @@ void RealTimeInflow::reset(const rotor::RotorDiskState& state) {
   served_ = slow_->inflow();
   last_lrm_ = served_;
   have_lrm_ = true;
-  in_flight_ = false;
+  jobs_.clear();
+  next_post_ = 0;
   pending_dt_ = 0;
 }
 
@@ -133,21 +140,36 @@ void RealTimeInflow::advance_lockstep(std::unique_lock<std::mutex>& lock, const 
 }
 
 void RealTimeInflow::advance_pipelined(std::unique_lock<std::mutex>& lock, const rotor::RotorDiskState& state, double dt) {
-  lag_steps_ = std::max(1, static_cast<int>(std::lround(interval_ / dt)));
-  if (in_flight_ && stats_.steps >= due_step_) {
-    const auto t = std::chrono::steady_clock::now();
-    in_flight_ = false;
-    have_lrm_ = collect(lock, in_flight_id_, deadline_after(in_flight_posted_, lag_steps_));
-    if (have_lrm_) {
-      last_lrm_ = result_;
-      stats_.worst_wait_s = std::max(stats_.worst_wait_s, std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
-    }
+  post_every_ = std::max(1, static_cast<int>(std::lround(interval_ / dt)));
+  lag_steps_ = kPipelineDepth * post_every_;
+  // A job the LRM thread has finished keeps its result here: the thread's one result slot is
+  // reused by the next job before this one is due.
+  if (!jobs_.empty() && !jobs_.back().finished && result_id_ == jobs_.back().id) {
+    jobs_.back().finished = true;
+    jobs_.back().result = result_;
+    jobs_.back().result_time = result_time_;
   }
-  if (!in_flight_ && !busy_ && !has_job_) {  // a late job still running keeps the thread: post later
-    in_flight_posted_ = std::chrono::steady_clock::now();
-    in_flight_id_ = post(state);
-    in_flight_ = true;
-    due_step_ = stats_.steps + lag_steps_;
+  // Serve the jobs that are due, oldest first: on time, the newest of them serves from now on.
+  while (!jobs_.empty() && jobs_.front().due_step <= stats_.steps) {
+    Job& j = jobs_.front();
+    bool on_time = j.finished && j.result_time <= deadline_after(j.posted, lag_steps_);
+    if (!j.finished) on_time = collect(lock, j.id, deadline_after(j.posted, lag_steps_));
+    if (on_time) {
+      last_lrm_ = j.finished ? j.result : result_;
+      const auto wait = std::chrono::steady_clock::now() - j.posted;
+      stats_.worst_wait_s = std::max(stats_.worst_wait_s, std::chrono::duration<double>(wait).count());
+    }
+    have_lrm_ = on_time;
+    jobs_.pop_front();
+  }
+  // Post every post_every_ steps (about one LBM step of flight time); a busy LRM thread defers it.
+  if (stats_.steps >= next_post_ && !busy_ && !has_job_) {
+    Job j;
+    j.posted = std::chrono::steady_clock::now();
+    j.id = post(state);
+    j.due_step = stats_.steps + lag_steps_;
+    jobs_.push_back(j);
+    next_post_ = stats_.steps + post_every_;
   }
   stats_.last_was_fallback = !have_lrm_;
   if (have_lrm_) {

@@ -12,11 +12,13 @@
 #include <visualization_msgs/Marker.h>
 
 #include <chrono>
+#include <cmath>
 #include <pluginlib/class_list_macros.hpp>
 
 #include "ship_lrm/flight/parameters.hpp"
 #include "ship_lrm/lrm/approach_fluid.hpp"
 #include "ship_lrm/lrm/domain_slice.hpp"
+#include "ship_lrm/lrm/realtime_inflow.hpp"
 #include "ship_lrm/ros/approach_params.hpp"
 #include "ship_lrm/ros/conversions.hpp"
 #include "ship_lrm/ros/run_status.hpp"
@@ -43,6 +45,9 @@ class LrmSolverNodelet : public nodelet::Nodelet {
       if (cfg.inflow != "lrm")
         NODELET_WARN("LrmSolver: approach/inflow is %s; the flight model will not ask for the LRM", cfg.inflow.c_str());
       fluid_ = std::make_unique<lrm::ApproachFluid>(cfg, p);
+      bool realtime = false;
+      pnh.param("realtime", realtime, false);
+      if (realtime) fluid_->set_catch_up_limit(lrm::kRealTimeCatchUpSteps);
     } catch (const std::exception& e) {
       NODELET_FATAL("LrmSolver: %s", e.what());
       report_failure(getNodeHandle(), std::string("LrmSolver: ") + e.what());
@@ -170,7 +175,8 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     else
       stat.summary(diagnostic_msgs::DiagnosticStatus::OK, "running");
     stat.add("requests served", served_);
-    stat.add("LBM steps", fluid_->domain().solver().steps_done());
+    stat.add("LBM steps", std::lround(fluid_->domain().time() / fluid_->domain().time_step()));
+    stat.add("LBM steps dropped to catch up (real time)", fluid_->dropped_steps());
     stat.add("LBM step (ms)", step_ms_);
     stat.add("MLUPS", mlups_);
     stat.add("max lattice Mach (slice)", max_mach_);

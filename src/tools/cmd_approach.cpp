@@ -142,7 +142,8 @@ std::function<int()> add_approach_command(CLI::App& app) {
       const lrm::RealTimeStats st = rt->stats();
       std::cout << "real time (" << (o->pipelined ? "pipelined" : "lock-step") << "): " << st.deadline_misses << " of " << st.steps
                 << " steps missed their inflow deadline (" << 100.0 * st.miss_fraction() << " %) and flew on Pitt-Peters; "
-                << pacer.overruns() << " steps ended after their due time\n";
+                << pacer.overruns() << " steps ended after their due time; the LRM dropped " << run.dropped_lrm_steps()
+                << " LBM steps to catch up\n";
     }
     if (!o->no_plot) {
       const std::string script = flight::shipped_directory("SHIP_LRM_SCRIPTS_DIR", "scripts") + "/analyze_approach.py";

@@ -3,6 +3,9 @@
 // the simulated-time (synchronous) result.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 #include "lrm_test_config.hpp"
 #include "ship_lrm/lrm/realtime_inflow.hpp"
 
@@ -67,40 +70,68 @@ void check_late_jobs_fall_back(lrm::RealTimeMode mode, double dt) {
 
 TEST(RealTimeInflow, LateResultsAreDroppedAndPittPetersServesThoseSteps) { check_late_jobs_fall_back(lrm::RealTimeMode::LockStep, 0.0072); }
 
-// Pipelined: the inflow served at each step is the synchronous model's answer to the job posted
-// lag_steps() earlier (that step's loads, the time since the previous job), held until the next one.
-TEST(RealTimeInflow, PipelinedServesTheSynchronousInflowOneLbmIntervalLater) {
+// Pipelined: a job is posted every post_every() steps (one LBM step of flight time: that step's
+// loads, the time since the previous job) and due lag_steps() = kPipelineDepth * post_every() steps
+// later; the inflow served at each step is the synchronous model's answer to the newest job due,
+// held until the next one is due. (The test waits for the LRM thread before each step, so that no
+// post is deferred and the sequence is the synchronous one.)
+TEST(RealTimeInflow, PipelinedServesTheSynchronousInflowKPipelineDepthLbmIntervalsLater) {
   const double dt = 0.0036;  // half the N = 16 lattice's 7.2 ms step
   lrm::LrmInflow ref(tiny_config(), 0.2);
   auto rt_ptr = lrm::make_realtime_lrm(tiny_config(), 0.2, 30.0, lrm::RealTimeMode::Pipelined);
   lrm::RealTimeInflow& rt = *rt_ptr;
   ref.reset(state_at(0, dt));
   rt.reset(state_at(0, dt));
-  rotor::RotorInflow expected = ref.inflow(), next;
+  rotor::RotorInflow expected = ref.inflow();
+  std::vector<std::pair<int, rotor::RotorInflow>> due;  // (due step, answer), oldest first
   double pending = 0;
-  long due = -1;
   int changes = 0;
-  for (int k = 1; k <= 40; ++k) {
+  for (int k = 1; k <= 60; ++k) {
+    rt.wait_idle();
     rt.advance(state_at(k, dt), dt);
-    const int m = rt.lag_steps();
-    ASSERT_EQ(m, 2) << "an LBM step of two flight steps";
+    ASSERT_EQ(rt.post_every(), 2) << "an LBM step of two flight steps";
+    ASSERT_EQ(rt.lag_steps(), 2 * lrm::kPipelineDepth);
     pending += dt;
-    if (due == k) {
-      changes += next.mean != expected.mean;
-      expected = next;
-      due = -1;
+    while (!due.empty() && due.front().first <= k) {
+      changes += due.front().second.mean != expected.mean;
+      expected = due.front().second;
+      due.erase(due.begin());
     }
-    if (due < 0) {
+    if ((k - 1) % rt.post_every() == 0) {
       ref.advance(state_at(k, dt), pending);
       pending = 0;
-      next = ref.inflow();
-      due = k + m;
+      due.emplace_back(k + rt.lag_steps(), ref.inflow());
     }
     ASSERT_EQ(rt.inflow().mean, expected.mean) << "step " << k;
     ASSERT_EQ(rt.inflow().cosine, expected.cosine) << "step " << k;
   }
   EXPECT_GT(changes, 10) << "the LRM inflow must evolve, or the comparison shows nothing";
   EXPECT_EQ(rt.stats().deadline_misses, 0);
+}
+
+// Catch-up limit (real time): an advance that covers more LBM steps than the limit runs only the
+// newest ones and moves the domain's clock on by the whole time; the next ordinary advance runs
+// one step. Without a limit every step runs.
+TEST(LrmInflow, CatchUpLimitRunsOnlyTheNewestStepsAndKeepsTheClock) {
+  lrm::LrmInflow limited(tiny_config(), 0.2), full(tiny_config(), 0.2);
+  const double dt = limited.domain().time_step();
+  limited.set_catch_up_limit(2);
+  limited.reset(state_at(0, dt));
+  full.reset(state_at(0, dt));
+  const long s0 = limited.lbm_steps(), f0 = full.lbm_steps();
+  const double t0 = limited.domain().time();
+  limited.advance(state_at(1, dt), 10 * dt);
+  full.advance(state_at(1, dt), 10 * dt);
+  EXPECT_EQ(limited.lbm_steps() - s0, 2);
+  EXPECT_EQ(full.lbm_steps() - f0, 10);
+  EXPECT_EQ(limited.dropped_steps(), 8);
+  EXPECT_EQ(full.dropped_steps(), 0);
+  EXPECT_NEAR(limited.domain().time() - t0, 10 * dt, 1e-9 * dt);
+  EXPECT_EQ(limited.domain().time(), full.domain().time());
+  limited.advance(state_at(2, dt), dt);
+  EXPECT_EQ(limited.lbm_steps() - s0, 3);
+  EXPECT_EQ(limited.dropped_steps(), 8);
+  EXPECT_TRUE(std::isfinite(limited.inflow().mean.z()));
 }
 
 TEST(RealTimeInflow, PipelinedLateJobsAreDroppedAndPittPetersServesUntilOneIsOnTime) {

@@ -231,3 +231,48 @@ TEST(ApproachFluid, LongJobsPlaceTheShipAtEveryLbmStep) {
   EXPECT_EQ(merged.domain().time(), fluid->domain().time());
   EXPECT_NEAR(last.mean.z(), single.mean.z(), 0.1 * std::abs(single.mean.z()));
 }
+
+// A real-time LRM that cannot keep up (issue 6 defect: the N = 32 approach on 2 cores diverged with
+// its fluid 5.6 s behind) drops its backlog: with a catch-up limit of L LBM steps a job runs only its
+// newest L steps, with the walls and faces placed at their times, and the domain's clock still reaches
+// the flight model's time, so the next job is an ordinary one. Without the limit the same job runs
+// every step.
+TEST(ApproachFluid, CatchUpLimitDropsTheBacklogAndKeepsTheClock) {
+  lrm::ApproachConfig c = config("lrm", 0.3);
+  c.path.start_distance = 10.0;
+  c.path.height = 5.0;
+  const auto params = flight::load_default_bo105();
+  auto fluid = std::make_shared<lrm::ApproachFluid>(c, params);
+  auto link = std::make_shared<RecordingLink>(fluid);
+  lrm::ShipApproach run(c, params, link);
+  while (!run.done()) run.step();
+  const auto& requests = link->requests;
+  ASSERT_GT(requests.size(), 150u);
+  ASSERT_EQ(requests.front().kind, lrm::InflowRequest::Kind::Reset);
+
+  // the reset, then one job for the rest of the flight, with and without a limit
+  lrm::InflowRequest job = requests.back();
+  job.dt = 0;
+  for (std::size_t k = 1; k < requests.size(); ++k) job.dt += requests[k].dt;
+  const long limit = 3;
+  lrm::ApproachFluid limited(c, params), full(c, params);
+  limited.set_catch_up_limit(limit);
+  limited.serve(requests.front());
+  full.serve(requests.front());
+  const double t0 = limited.domain().time();
+  const rotor::RotorInflow a = limited.serve(job);
+  full.serve(job);
+  const long due = std::lround((full.domain().time() - t0) / full.domain().time_step());
+  ASSERT_GT(due, 3 * limit);
+  EXPECT_EQ(limited.domain().time(), full.domain().time());  // the clock reaches the flight model's time
+  EXPECT_NEAR(limited.domain().time(), fluid->domain().time(), 0.5 * full.domain().time_step());
+  EXPECT_EQ(limited.dropped_steps(), due - limit);
+  EXPECT_EQ(full.dropped_steps(), 0);
+  EXPECT_TRUE(std::isfinite(a.mean.z()));
+  // the next ordinary request runs one step as usual
+  lrm::InflowRequest next = requests.back();
+  next.dt = full.domain().time_step();
+  next.table_time += next.dt;
+  limited.serve(next);
+  EXPECT_EQ(limited.dropped_steps(), due - limit);
+}

@@ -70,6 +70,9 @@ class ShipApproach {
   const flight::Helicopter& helicopter() const { return *heli_; }
   // The LRM domain when it runs in this process (batch path), else nullptr.
   LrmDomain* lrm_domain() { return fluid_ ? &fluid_->domain() : nullptr; }
+  // LBM steps the real-time LRM dropped to catch up (ApproachFluid::set_catch_up_limit); read it
+  // when the run is over (the LRM thread owns the domain while it runs).
+  long dropped_lrm_steps() const { return fluid_ ? fluid_->dropped_steps() : 0; }
   // With LRM inflow: the flight side's end of the link (whether it fell back to Pitt-Peters), else
   // nullptr. In real time it runs in the LRM thread: read only lost(), lost_reason() (once lost) and
   // fallback_calls() from here.

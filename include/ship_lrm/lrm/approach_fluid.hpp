@@ -28,6 +28,10 @@ class ApproachFluid {
   // and this one, so that a moving ship is re-voxelised as often as in simulated time.
   rotor::RotorInflow serve(const InflowRequest& request);
 
+  // Real time: at most this many LBM steps per request, the rest of a backlog dropped (LrmInflow).
+  void set_catch_up_limit(long steps) { lrm_.set_catch_up_limit(steps); }
+  long dropped_steps() const { return lrm_.dropped_steps(); }
+
   LrmDomain& domain() { return lrm_.domain(); }
   std::size_t voxelisations() const { return walls_ ? walls_->voxelisations() : 0; }
   std::size_t face_refreshes() const { return face_refreshes_; }

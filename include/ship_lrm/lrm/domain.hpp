@@ -59,6 +59,11 @@ class LrmDomain {
   int cells_per_edge() const { return edge_; }
   double time_step() const { return units_.dt(); }  // s, one LBM step
   double time() const { return steps_ * units_.dt(); }
+  // Moves the domain's clock on by n LBM steps without stepping the flow (a real-time run that has
+  // fallen behind drops its backlog: LrmInflow::set_catch_up_limit). The flow is kept as it is.
+  void skip_steps(long n) {
+    if (n > 0) steps_ += n;
+  }
   const rotor::DiskCoupling& disk() const { return disk_; }
   lbm::Solver& solver() { return *solver_; }
 

@@ -38,8 +38,17 @@ class LrmInflow final : public rotor::InflowModel {
   rotor::RotorInflow inflow() const override { return inflow_; }
   bool needs_harmonics() const override { return true; }
 
-  // LBM steps an advance(state, dt) would run now (0 before the first reset).
+  // LBM steps an advance(state, dt) would run now (0 before the first reset), before the catch-up limit.
   long steps_due(double dt) const;
+  // Real time only: an advance runs at most `steps` LBM steps (0: no limit, the default). A longer one
+  // (the LRM thread has fallen behind the wall clock) drops the rest of its backlog: the domain's clock
+  // jumps to the flight model's time with the flow as it is, and the dropped steps are counted.
+  // Otherwise a slow LRM gets ever longer jobs, runs ever further behind, and its walls and faces jump.
+  void set_catch_up_limit(long steps) { catch_up_limit_ = steps > 0 ? steps : 0; }
+  long catch_up_limit() const { return catch_up_limit_; }
+  // Moves the flight-model time on by dt without stepping the flow (the dropped part of a backlog).
+  void skip(double dt);
+  long dropped_steps() const { return dropped_steps_; }
 
   LrmDomain& domain() { return domain_; }
   long lbm_steps() { return domain_.solver().steps_done(); }
@@ -52,6 +61,7 @@ class LrmInflow final : public rotor::InflowModel {
   double warm_up_;
   bool started_ = false;
   double time_ = 0;  // flight-model time reached by the inflow model
+  long catch_up_limit_ = 0, dropped_steps_ = 0;
   rotor::RotorInflow inflow_;
   // previous coupling step's kinematics, for the accelerations
   bool have_previous_ = false;

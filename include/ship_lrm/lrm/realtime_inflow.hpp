@@ -10,17 +10,22 @@
 // Two modes:
 // - LockStep: the inflow of a coupling step is the LRM's answer to that step's loads, waited for
 //   within the step's deadline. Only works where one LBM step fits into one flight step.
-// - Pipelined: the LRM runs one job behind. A job posted at step k (that step's loads, the domain
-//   advanced to that step's time) is due m steps later, m = LBM step / flight step (at least 1),
-//   and its inflow serves from then on; in between, the last on-time LRM inflow serves (as the
-//   synchronous model holds its inflow between LBM steps). The LRM thread thus has m flight steps of
-//   wall time per LBM step, at the price of an inflow one LBM interval older. A job late at its due
-//   step is dropped; Pitt-Peters serves until the next job makes its deadline.
+// - Pipelined: the LRM runs behind by kPipelineDepth LBM intervals. Every m flight steps, m = LBM step /
+//   flight step (at least 1), a job is posted (that step's loads, the domain advanced to that
+//   step's time); it is due kPipelineDepth * m steps later, and its inflow serves from then on; in
+//   between, the last on-time LRM inflow serves (as the synchronous model holds its inflow between
+//   LBM steps). Up to kPipelineDepth jobs are under way, one of them in the LRM thread. Each job has
+//   kPipelineDepth LBM intervals of wall time, so a job that must run two LBM steps (the flight steps
+//   do not divide the LBM step, so every so often one does) or one slowed by the machine still makes
+//   it, at the price of an inflow kPipelineDepth LBM intervals older (6.6 ms at N = 32, against the
+//   rotor's inflow time constant of the order of 0.1 s). A job late at its due step is dropped;
+//   Pitt-Peters serves until the next job makes its deadline. A busy LRM thread defers the next post.
 // Simulated-time runs (deterministic) use LrmInflow or LinkedInflow directly; this class is for paced runs.
 #pragma once
 
 #include <chrono>
 #include <condition_variable>
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -41,6 +46,14 @@ struct RealTimeStats {
 
 enum class RealTimeMode { LockStep, Pipelined };
 
+// LBM intervals a pipelined job has between posting and its due step (see above).
+constexpr int kPipelineDepth = 2;
+
+// LBM steps one job of a real-time LRM may run (LrmInflow::set_catch_up_limit): a job that covers more
+// (the LRM had fallen behind the wall clock) drops the older part of its backlog. Two jobs' worth of
+// the pipelined mode's usual one or two steps.
+constexpr long kRealTimeCatchUpSteps = 4;
+
 class RealTimeInflow final : public rotor::InflowModel {
  public:
   // slow: the model run in the LRM thread (its reset and advance only ever run there or while that
@@ -58,12 +71,16 @@ class RealTimeInflow final : public rotor::InflowModel {
 
   RealTimeStats stats() const;
   RealTimeMode mode() const { return mode_; }
-  // Pipelined: flight steps between posting a job and its due step (known after reset()).
+  // Pipelined: flight steps between posting a job and its due step, and between two posts (known
+  // after the first advance()).
   int lag_steps() const { return lag_steps_; }
+  int post_every() const { return post_every_; }
   void set_budget(double seconds) { budget_ = std::chrono::duration<double>(seconds); }
   // A paced loop gives each step an absolute deadline instead (the wall-clock time the step is due);
   // a default time_point returns to the budget.
   void set_deadline(std::chrono::steady_clock::time_point t) { deadline_ = t; }
+  // Blocks until the LRM thread has no job (tests: a post is then never deferred).
+  void wait_idle();
   // The slow model itself; only while the LRM thread is idle (after reset, or in tests).
   rotor::InflowModel& slow() { return *slow_; }
 
@@ -95,11 +112,18 @@ class RealTimeInflow final : public rotor::InflowModel {
   std::exception_ptr error_;
   // time and state not yet handed to the LRM thread (it was busy)
   double pending_dt_ = 0;
-  // pipelined: the job in flight, its due step, and the last LRM inflow that made its deadline
-  int lag_steps_ = 1;
-  bool in_flight_ = false, have_lrm_ = false;
-  long in_flight_id_ = 0, due_step_ = 0;
-  std::chrono::steady_clock::time_point in_flight_posted_{};
+  // pipelined: the jobs under way (oldest first), and the last LRM inflow that made its deadline
+  struct Job {
+    long id = 0, due_step = 0;
+    std::chrono::steady_clock::time_point posted{};
+    bool finished = false;  // result and result_time hold the LRM thread's answer
+    rotor::RotorInflow result;
+    std::chrono::steady_clock::time_point result_time{};
+  };
+  std::deque<Job> jobs_;
+  int lag_steps_ = 1, post_every_ = 1;
+  long next_post_ = 0;
+  bool have_lrm_ = false;
   rotor::RotorInflow last_lrm_;
   std::thread thread_;
 };
