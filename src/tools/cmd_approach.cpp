@@ -73,7 +73,7 @@ std::function<int()> add_approach_command(CLI::App& app) {
   cmd->add_flag("--realtime", o->realtime,
                 "lrm: pace to the wall clock; the LRM runs in its own thread and a step whose inflow misses its deadline "
                 "flies on Pitt-Peters (counted; not deterministic)");
-  cmd->add_flag("--pipelined", o->pipelined, "with --realtime: the LRM one LBM step behind the flight model (more time per LBM step)");
+  cmd->add_flag("--pipelined", o->pipelined, "with --realtime: the LRM two LBM intervals behind the flight model (more time per LBM step)");
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
     lrm::ApproachConfig cfg = o->cfg;

@@ -48,6 +48,28 @@ lrm::ApproachConfig config(const std::string& inflow, double duration) {
   c.lrm.backend = lbm::Backend::Cpu;
   return c;
 }
+
+// A simulated-time LRM approach 10 m behind the spot, 5 m above the deck: the fluid side that served
+// it and every request it sent.
+struct RecordedRun {
+  lrm::ApproachConfig config;
+  std::shared_ptr<lrm::ApproachFluid> fluid;
+  std::vector<lrm::InflowRequest> requests;
+};
+RecordedRun record_approach(double duration) {
+  RecordedRun r;
+  r.config = config("lrm", duration);
+  r.config.path.start_distance = 10.0;
+  r.config.path.height = 5.0;
+  const auto params = flight::load_default_bo105();
+  r.fluid = std::make_shared<lrm::ApproachFluid>(r.config, params);
+  auto link = std::make_shared<RecordingLink>(r.fluid);
+  lrm::ShipApproach run(r.config, params, link);
+  while (!run.done()) run.step();
+  r.requests = link->requests;
+  return r;
+}
+
 }  // namespace
 
 TEST(ApproachPath, ThesisNumbers) {
@@ -191,15 +213,11 @@ TEST(ShipApproach, RealTimeOnTimeIsTheSimulatedRunAndLateStepsArePittPeters) {
 // job it could be re-voxelised at most once per job), the fluid reaches the same time, and the
 // inflow stays close to the request-by-request one.
 TEST(ApproachFluid, LongJobsPlaceTheShipAtEveryLbmStep) {
-  lrm::ApproachConfig c = config("lrm", 0.9);
-  c.path.start_distance = 10.0;
-  c.path.height = 5.0;
+  const RecordedRun rec = record_approach(0.9);
+  const lrm::ApproachConfig& c = rec.config;
   const auto params = flight::load_default_bo105();
-  auto fluid = std::make_shared<lrm::ApproachFluid>(c, params);
-  auto link = std::make_shared<RecordingLink>(fluid);
-  lrm::ShipApproach run(c, params, link);
-  while (!run.done()) run.step();
-  const auto& requests = link->requests;
+  const auto& fluid = rec.fluid;
+  const auto& requests = rec.requests;
   ASSERT_GT(requests.size(), 400u);
 
   lrm::ApproachFluid merged(c, params);
@@ -238,15 +256,11 @@ TEST(ApproachFluid, LongJobsPlaceTheShipAtEveryLbmStep) {
 // the flight model's time, so the next job is an ordinary one. Without the limit the same job runs
 // every step.
 TEST(ApproachFluid, CatchUpLimitDropsTheBacklogAndKeepsTheClock) {
-  lrm::ApproachConfig c = config("lrm", 0.3);
-  c.path.start_distance = 10.0;
-  c.path.height = 5.0;
+  const RecordedRun rec = record_approach(0.3);
+  const lrm::ApproachConfig& c = rec.config;
   const auto params = flight::load_default_bo105();
-  auto fluid = std::make_shared<lrm::ApproachFluid>(c, params);
-  auto link = std::make_shared<RecordingLink>(fluid);
-  lrm::ShipApproach run(c, params, link);
-  while (!run.done()) run.step();
-  const auto& requests = link->requests;
+  const auto& fluid = rec.fluid;
+  const auto& requests = rec.requests;
   ASSERT_GT(requests.size(), 150u);
   ASSERT_EQ(requests.front().kind, lrm::InflowRequest::Kind::Reset);
 
