@@ -105,6 +105,7 @@ class CpuSolver final : public Solver {
       if (!rho.empty()) m.rho = rho[c];
       if (!u.empty())
         for (int a = 0; a < 3; ++a) m.u[a] = u[3 * c + a];
+      SHIP_LRM_UNROLL  // constant directions: the LRM re-initialises all cells at every rebuild of its walls
       for (int i = 0; i < Q; ++i) pop(v, i, c) = store_pop(equilibrium(i, m.rho, m.u));
       if (v.aux) store_aux(v, c, m);
     }

@@ -198,6 +198,14 @@ std::uint8_t Lattice::reflection_mode(int x, int y, int z) const {
 std::uint32_t Lattice::link_mask(int x, int y, int z) const {
   const int n[3] = {cfg_.nx, cfg_.ny, cfg_.nz};
   std::uint32_t mask = 0;
+  if (x > 0 && y > 0 && z > 0 && x < n[0] - 1 && y < n[1] - 1 && z < n[2] - 1) {  // all neighbours inside
+    for (int i = 1; i < Q; ++i) {
+      const auto t = static_cast<CellType>(type_[index(x + d3q19::cx(i), y + d3q19::cy(i), z + d3q19::cz(i))] & ~kGeneralBit);
+      if (is_wall(t)) mask |= 1u << i;
+      if (t == CellType::MovingWall) mask |= kMovingWallLink;
+    }
+    return mask;
+  }
   for (int i = 1; i < Q; ++i) {
     int p[3] = {x + d3q19::cx(i), y + d3q19::cy(i), z + d3q19::cz(i)};
     bool hit = false, moving = false;
@@ -335,18 +343,32 @@ void Lattice::finalize() {
   for (const auto& [c, v] : explicit_values_) values[c] = v;
   row_offsets_ = bulk_class_offsets(n);
   const std::vector<char> support = support_marks();
+  // Link masks and reflection rules of all fluid-like cells first, in parallel: the LRM rebuilds
+  // its lattice whenever its wall cells change (a moving ship: dozens of times a second).
+  bool slip = false;
+  for (const FaceCondition& f : cfg_.faces) slip = slip || f.type == FaceType::SlipWall;
+  for (std::size_t c = 0; c < cells() && !slip; ++c) slip = static_cast<CellType>(type_[c]) == CellType::SlipWall;
+  std::vector<std::uint32_t> masks(cells(), 0);
+#pragma omp parallel for schedule(static)
+  for (int z = 0; z < n[2]; ++z)
+    for (int y = 0; y < n[1]; ++y)
+      for (int x = 0; x < n[0]; ++x) {
+        const std::size_t c = index(x, y, z);
+        if (is_wall(static_cast<CellType>(type_[c]))) continue;
+        tag_[c] = slip ? reflection_mode(x, y, z) : 0;  // reflection_mode is 0 without slip walls
+        masks[c] = link_mask(x, y, z);
+      }
   for (int z = 0; z < n[2]; ++z)
     for (int y = 0; y < n[1]; ++y)
       for (int x = 0; x < n[0]; ++x) {
         const std::size_t c = index(x, y, z);
         const auto t = static_cast<CellType>(type_[c]);
         if (is_wall(t)) continue;
-        tag_[c] = reflection_mode(x, y, z);
         if (is_open_boundary(t)) {
           const int f = open_normal(x, y, z);
           bnd_cell_.push_back(static_cast<std::uint32_t>(c));
           bnd_normal_.push_back(static_cast<std::uint8_t>(f));
-          bnd_mask_.push_back(link_mask(x, y, z));
+          bnd_mask_.push_back(masks[c]);
           std::array<float, 4> v{0, 0, 0, 0};
           const auto it = values.find(static_cast<std::uint32_t>(c));
           if (it != values.end()) {
@@ -363,7 +385,7 @@ void Lattice::finalize() {
         // Cells with resting walls among their neighbours stream through their link mask; runs of
         // cells with equal class, mask and reflection rule form one vectorised segment. Bulk cells
         // (mask 0) are segments too. Cells next to moving walls take the checked path.
-        const std::uint32_t mask = link_mask(x, y, z);
+        const std::uint32_t mask = masks[c];
         const std::uint32_t cls = static_cast<std::uint32_t>(cell_class(n, x, y, z));
         const std::uint8_t store = support[c] ? 1 : 0;
         if (mask != 0) type_[c] |= kGeneralBit;  // the GPU kernel's checked path
