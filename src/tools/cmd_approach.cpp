@@ -146,10 +146,8 @@ std::function<int()> add_approach_command(CLI::App& app) {
                 << " LBM steps to catch up\n";
     }
     if (!o->no_plot) {
-      const std::string script = flight::shipped_directory("SHIP_LRM_SCRIPTS_DIR", "scripts") + "/analyze_approach.py";
-      const std::string c = "/usr/bin/python3 '" + script + "' '" + (dir / "approach.csv").string() + "' --out '" + dir.string() +
-                            "' --startup " + std::to_string(cfg.startup);
-      if (std::system(c.c_str()) != 0)
+      if (!run_script("analyze_approach.py",
+                      "'" + (dir / "approach.csv").string() + "' --out '" + dir.string() + "' --startup " + std::to_string(cfg.startup)))
         std::cerr << "ship_lrm: warning: the analysis failed (needs python3 with numpy, matplotlib and pywt); the CSV is complete\n";
     }
     return 0;

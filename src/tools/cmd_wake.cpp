@@ -129,9 +129,7 @@ std::function<int()> add_wake_command(CLI::App& app) {
     std::cout << "wrote " << r.table << ", " << r.xdmf << ", " << r.centre_plane_csv << "\n";
     if (!(*flags)[3]) {
       const fs::path png = fs::path(r.centre_plane_csv).replace_extension(".png");
-      const std::string cmdline = "/usr/bin/env python3 '" + flight::shipped_directory("SHIP_LRM_SCRIPTS_DIR", "scripts") +
-                                  "/plot_wake.py' plane '" + r.centre_plane_csv + "' '" + png.string() + "'";
-      if (std::system(cmdline.c_str()) != 0)
+      if (!run_script("plot_wake.py", "plane '" + r.centre_plane_csv + "' '" + png.string() + "'"))
         std::cerr << "ship_lrm: warning: plotting failed (needs python3 with matplotlib); the CSV " << r.centre_plane_csv
                   << " is complete\n";
     }

@@ -29,6 +29,10 @@ std::vector<double> parse_speeds(const std::string& text);
 void prepare_output(const std::filesystem::path& dir, const std::vector<std::string>& names, bool overwrite);
 // scripts/plot_flight.py <kind> csv png [--reference ref]; a failure is a warning, the CSV stays.
 void plot(const std::string& kind, const std::filesystem::path& csv, const std::filesystem::path& png, const std::string& reference);
+// Runs a shipped script from scripts/ with Debian's python3 (the one with matplotlib, numpy and
+// PyWavelets; a pyenv python3 earlier on PATH may lack them), `args` appended as given (the caller
+// quotes them). True when it succeeded.
+bool run_script(const std::string& script, const std::string& args);
 #endif
 
 }  // namespace ship_lrm::tools

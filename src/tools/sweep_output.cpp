@@ -49,12 +49,17 @@ void prepare_output(const fs::path& dir, const std::vector<std::string>& names, 
     if (fs::exists(dir / n) && !overwrite) throw std::runtime_error((dir / n).string() + " exists; pass --overwrite to replace it");
 }
 
+bool run_script(const std::string& script, const std::string& args) {
+  const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string cmd = python + " '" + flight::shipped_directory("SHIP_LRM_SCRIPTS_DIR", "scripts") + "/" + script + "' " + args;
+  return std::system(cmd.c_str()) == 0;
+}
+
 // Plot with Debian's python3 + matplotlib; a missing plotter is a warning, the CSV stays.
 void plot(const std::string& kind, const fs::path& csv, const fs::path& png, const std::string& reference) {
-  std::string cmd = "/usr/bin/env python3 '" + flight::shipped_directory("SHIP_LRM_SCRIPTS_DIR", "scripts") + "/plot_flight.py' " + kind +
-                    " '" + csv.string() + "' '" + png.string() + "'";
-  if (!reference.empty()) cmd += " --reference '" + reference + "'";
-  if (std::system(cmd.c_str()) != 0)
+  std::string args = kind + " '" + csv.string() + "' '" + png.string() + "'";
+  if (!reference.empty()) args += " --reference '" + reference + "'";
+  if (!run_script("plot_flight.py", args))
     std::cerr << "ship_lrm: warning: plotting failed (needs python3 with matplotlib); the CSV " << csv << " is complete\n";
   else
     std::cout << "wrote " << png.string() << "\n";
