@@ -66,14 +66,18 @@ RealTimeStats RealTimeInflow::stats() const {
   return stats_;
 }
 
+void RealTimeInflow::wait_idle(std::unique_lock<std::mutex>& lock) {
+  result_ready_.wait(lock, [this] { return !busy_ && !has_job_; });
+}
+
 void RealTimeInflow::wait_idle() {
   std::unique_lock<std::mutex> lock(mutex_);
-  result_ready_.wait(lock, [this] { return !busy_ && !has_job_; });
+  wait_idle(lock);
 }
 
 void RealTimeInflow::reset(const rotor::RotorDiskState& state) {
   std::unique_lock<std::mutex> lock(mutex_);
-  result_ready_.wait(lock, [this] { return !busy_ && !has_job_; });  // the LRM thread is idle
+  wait_idle(lock);
   slow_->reset(state);
   fallback_.reset(state);
   served_ = slow_->inflow();
@@ -152,12 +156,12 @@ void RealTimeInflow::advance_pipelined(std::unique_lock<std::mutex>& lock, const
   // Serve the jobs that are due, oldest first: on time, the newest of them serves from now on.
   while (!jobs_.empty() && jobs_.front().due_step <= stats_.steps) {
     Job& j = jobs_.front();
-    bool on_time = j.finished && j.result_time <= deadline_after(j.posted, lag_steps_);
-    if (!j.finished) on_time = collect(lock, j.id, deadline_after(j.posted, lag_steps_));
+    const auto t = std::chrono::steady_clock::now();
+    const auto deadline = deadline_after(j.posted, lag_steps_);
+    const bool on_time = j.finished ? j.result_time <= deadline : collect(lock, j.id, deadline);
     if (on_time) {
       last_lrm_ = j.finished ? j.result : result_;
-      const auto wait = std::chrono::steady_clock::now() - j.posted;
-      stats_.worst_wait_s = std::max(stats_.worst_wait_s, std::chrono::duration<double>(wait).count());
+      stats_.worst_wait_s = std::max(stats_.worst_wait_s, std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
     }
     have_lrm_ = on_time;
     jobs_.pop_front();

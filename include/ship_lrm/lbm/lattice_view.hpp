@@ -488,9 +488,9 @@ SHIP_LRM_HD bool open_edge_neighbour(const LatticeView& v, int x, int y, int z, 
 }
 
 // Density and velocity of a fluid cell from its pre-collision populations (step parity kOdd):
-// bulk cells through their fixed offsets, others by the checked gather. Off the hot path, but the
-// LRM reads its disk cells and the cells behind its faces so every step (ncu on an H100, N = 64: with
-// the checked gather for all of them the odd-step support pass took 280 us, the even one 23 us).
+// bulk cells through their fixed offsets, others by the checked gather. Off the hot path: the LRM
+// reads its disk cells so every step, and pass 1 of the open boundaries the few open-boundary cells
+// next to another (support_state).
 template <bool kOdd>
 SHIP_LRM_HD Macro fluid_macro(const LatticeView& v, std::size_t c) {
   int x, y, z;

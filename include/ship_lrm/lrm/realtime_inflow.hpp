@@ -50,9 +50,10 @@ enum class RealTimeMode { LockStep, Pipelined };
 constexpr int kPipelineDepth = 2;
 
 // LBM steps one job of a real-time LRM may run (LrmInflow::set_catch_up_limit): a job that covers more
-// (the LRM had fallen behind the wall clock) drops the older part of its backlog. Two jobs' worth of
-// the pipelined mode's usual one or two steps.
-constexpr long kRealTimeCatchUpSteps = 4;
+// (the LRM had fallen behind the wall clock) drops the older part of its backlog. No more than a
+// pipelined job's kPipelineDepth intervals: a longer job would miss its deadline, the next would cover
+// still more, and the pipeline would stay behind (4 let one disturbance cost up to 90 % of a 20 s run).
+constexpr long kRealTimeCatchUpSteps = kPipelineDepth;
 
 class RealTimeInflow final : public rotor::InflowModel {
  public:
@@ -86,6 +87,7 @@ class RealTimeInflow final : public rotor::InflowModel {
 
  private:
   void worker();
+  void wait_idle(std::unique_lock<std::mutex>& lock);  // with mutex_ held
   void advance_lockstep(std::unique_lock<std::mutex>& lock, const rotor::RotorDiskState& state);
   void advance_pipelined(std::unique_lock<std::mutex>& lock, const rotor::RotorDiskState& state, double dt);
   long post(const rotor::RotorDiskState& state);  // hands the state and the pending time to the LRM thread
