@@ -128,7 +128,9 @@ def plot_sweep_ground(data, out):
     if hover:
         fig, ax = plt.subplots(figsize=(7, 5))
         z = data["z_over_R"]
-        ax.plot(z, data["ratio"], "o-", label=label)
+        # half-window differences of the two means (older CSVs have none)
+        err = data.get("ratio_uncertainty")
+        ax.errorbar(z, data["ratio"], yerr=err, fmt="o-", capsize=3, label=label)
         ax.plot(z, data["cheeseman_bennett"], "--", color="k", label="Cheeseman & Bennett 1955")
         ax.plot(z, data["hayden"], ":", color="k", label="Hayden 1976 (power ratio)")
         ax.axhline(1.0, color="grey", lw=0.8)
@@ -136,21 +138,35 @@ def plot_sweep_ground(data, out):
         ax.set_ylabel("v_mean / v_mean,OGE")
         ax.set_title("Hover in ground effect, equal thrust (cf. thesis fig. 8.9)")
     else:
-        fig, ax = plt.subplots(figsize=(8, 5))
+        fig, (ax_v, ax) = plt.subplots(1, 2, figsize=(13, 5))
         heights = sorted(set(data["z_over_R"]))
+        n = len(data["speed_m_s"])
         rows = list(zip(data["speed_m_s"], data["z_over_R"], data["lrm_mean_m_s"], data["lrm_mean_oge_m_s"],
-                        data["cheeseman_bennett"], data["momentum_theory_oge_m_s"]))
+                        data["cheeseman_bennett"], data["momentum_theory_oge_m_s"],
+                        data.get("lrm_half_difference_m_s", [0.0] * n), data["ratio"],
+                        data.get("ratio_uncertainty", [0.0] * n)))
         oge = sorted({(r[0], r[3], r[5]) for r in rows})
-        ax.plot([o[0] for o in oge], [o[1] for o in oge], "o-", color="k", label=f"{label}, OGE")
-        ax.plot([o[0] for o in oge], [o[2] for o in oge], "--", color="k", label="Glauert, OGE")
+        ax_v.plot([o[0] for o in oge], [o[1] for o in oge], "o-", color="k", label=f"{label}, OGE")
+        ax_v.plot([o[0] for o in oge], [o[2] for o in oge], "--", color="k", label="Glauert, OGE")
         for i, h in enumerate(heights):
             sel = sorted((r for r in rows if r[1] == h), key=lambda r: r[0])
             c = f"C{i}"
-            ax.plot([r[0] for r in sel], [r[2] for r in sel], "o-", color=c, label=f"LRM z/R = {h:g}")
-            ax.plot([r[0] for r in sel], [r[5] * r[4] for r in sel], "--", color=c, label=f"Glauert x Cheeseman-Bennett, z/R = {h:g}")
+            speeds = [r[0] for r in sel]
+            ax_v.errorbar(speeds, [r[2] for r in sel], yerr=[abs(r[6]) for r in sel], fmt="o-", color=c, capsize=3,
+                          label=f"LRM z/R = {h:g}")
+            ax_v.plot(speeds, [r[5] * r[4] for r in sel], "--", color=c, label=f"Glauert x Cheeseman-Bennett, z/R = {h:g}")
+            ax.errorbar(speeds, [r[7] for r in sel], yerr=[abs(r[8]) for r in sel], fmt="o-", color=c, capsize=3,
+                        label=f"LRM z/R = {h:g}")
+            ax.plot(speeds, [r[4] for r in sel], "--", color=c, label=f"Cheeseman-Bennett z/R = {h:g}")
+        ax_v.set_xlabel("speed [m/s]")
+        ax_v.set_ylabel("mean inflow v_mean [m/s]")
+        ax_v.set_title("Forward flight in ground effect (cf. thesis fig. 8.11)")
+        ax_v.grid(True, alpha=0.3)
+        ax_v.legend(fontsize=7)
+        ax.axhline(1.0, color="grey", lw=0.8)
         ax.set_xlabel("speed [m/s]")
-        ax.set_ylabel("mean inflow v_mean [m/s]")
-        ax.set_title("Forward flight in ground effect (cf. thesis fig. 8.11)")
+        ax.set_ylabel("v_mean / v_mean,OGE at the same speed")
+        ax.set_title("Ratio to out of ground effect (error bars: half-window differences)")
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <vector>
 
 #include "ship_lrm/rotor/momentum_theory.hpp"
 #include "ship_lrm/rotor/pitt_peters.hpp"
@@ -42,13 +43,25 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
   const long every = std::max(1L, static_cast<long>(std::lround(0.05 / d.time_step())));  // sample every ~0.05 s
   const long samples = std::max(1L, static_cast<long>(std::ceil(c.average / (every * d.time_step()))));
   d.step(std::max(1L, settle));
+  std::vector<double> induced(static_cast<size_t>(samples));
   for (long k = 0; k < samples; ++k) {
     d.step(every);
     const rotor::RotorInflow in = d.inflow();
     r.inflow.mean += in.mean / samples;
     r.inflow.sine += in.sine / samples;
     r.inflow.cosine += in.cosine / samples;
+    induced[static_cast<size_t>(k)] = in.mean.z();
   }
+  double square = 0, first = 0, second = 0;
+  const long half = samples / 2;
+  for (long k = 0; k < samples; ++k) {
+    const double v = induced[static_cast<size_t>(k)];
+    square += (v - r.inflow.mean.z()) * (v - r.inflow.mean.z());
+    if (k < half) first += v / half;
+    if (k >= samples - half && half > 0) second += v / half;
+  }
+  r.induced_std = samples > 1 ? std::sqrt(square / (samples - 1)) : 0.0;
+  r.induced_half_difference = second - first;
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.steps = d.solver().steps_done();
   r.simulated_seconds = d.time();

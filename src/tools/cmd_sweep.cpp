@@ -1,6 +1,7 @@
 // `ship_lrm sweep inflow` and `sweep ground`: isolated rotor in the LRM domain over speeds (against
 // Pitt-Peters and momentum theory, thesis 8.1) or ground heights (thesis 8.2.3), CSV + PNG.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -115,25 +116,33 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
     }
     std::ofstream csv(dir / "ground_sweep.csv");
     csv << "mode,speed_m_s,z_over_R,z_effective_over_R,lrm_mean_m_s,lrm_mean_oge_m_s,ratio,cheeseman_bennett,hayden,"
-           "momentum_theory_oge_m_s,faces,N,reach,steps,wall_s\n";
+           "momentum_theory_oge_m_s,faces,N,reach,steps,wall_s,lrm_std_m_s,lrm_half_difference_m_s,oge_std_m_s,oge_half_difference_m_s,"
+           "ratio_uncertainty\n";
     for (double v : speeds) {
       const auto run_cfg = lrm::config_for_stream(cfg, v);
       const auto oge = lrm::run_isolated_rotor(run_cfg, case_for(v, 0));
       const double vi = rotor::glauert_induced_velocity(o->thrust, cfg.density, cfg.radius, v);
       std::cout << std::fixed << std::setprecision(3) << "V = " << v << " m/s, out of ground effect: v_mean " << oge.induced_mean
-                << " m/s (momentum theory " << vi << ")\n";
+                << " m/s +- " << std::abs(oge.induced_half_difference) << " (momentum theory " << vi << ")" << std::endl;
       for (double h : heights) {
         const auto r = lrm::run_isolated_rotor(run_cfg, case_for(v, h));
         const double ratio = r.induced_mean / oge.induced_mean;
+        // the half-window differences of both means, combined (see IsolatedRotorResult)
+        const double uncertainty =
+            std::abs(ratio) * std::hypot(r.induced_half_difference / r.induced_mean, oge.induced_half_difference / oge.induced_mean);
         const double cb = lrm::cheeseman_bennett_ratio(h, v, vi);
-        std::cout << "  z/R = " << h << ": v_mean " << r.induced_mean << " m/s, ratio " << ratio << " (Cheeseman-Bennett " << cb;
+        std::cout << "  z/R = " << h << ": v_mean " << r.induced_mean << " m/s, ratio " << ratio << " +- " << uncertainty
+                  << " (Cheeseman-Bennett " << cb;
         if (hover) std::cout << ", Hayden " << lrm::hayden_ratio(h);
         std::cout << "); " << r.steps << " steps in " << std::setprecision(1) << r.wall_seconds << " s\n" << std::setprecision(3);
         csv << std::setprecision(6) << o->mode << "," << v << "," << h << "," << r.ground_effective_height / cfg.radius << ","
             << r.induced_mean << "," << oge.induced_mean << "," << ratio << "," << cb << ",";
         if (hover) csv << lrm::hayden_ratio(h);
-        csv << "," << vi << "," << o->faces << "," << cfg.nodes << "," << cfg.reach << "," << r.steps << "," << r.wall_seconds << "\n";
+        csv << "," << vi << "," << o->faces << "," << cfg.nodes << "," << cfg.reach << "," << r.steps << "," << r.wall_seconds << ","
+            << r.induced_std << "," << r.induced_half_difference << "," << oge.induced_std << "," << oge.induced_half_difference << ","
+            << uncertainty << "\n";
         csv.flush();
+        std::cout.flush();
       }
     }
     csv.close();
@@ -170,7 +179,8 @@ std::function<int()> add_sweep_command(CLI::App& app) {
     }
     std::ofstream csv(dir / "inflow_sweep.csv");
     csv << "speed_m_s,lrm_mean_m_s,lrm_cosine_m_s,lrm_sine_m_s,lrm_inplane_x_m_s,pitt_peters_mean_m_s,pitt_peters_cosine_m_s,"
-           "momentum_theory_m_s,hover_momentum_theory_m_s,mean_over_pitt_peters,N,reach,cells_per_edge,time_step_s,steps,wall_s\n";
+           "momentum_theory_m_s,hover_momentum_theory_m_s,mean_over_pitt_peters,N,reach,cells_per_edge,time_step_s,steps,wall_s,"
+           "lrm_mean_std_m_s,lrm_mean_half_difference_m_s\n";
     const double vh = rotor::hover_induced_velocity(o->thrust, cfg.density, cfg.radius);
     for (double v : speeds) {
       const auto r = lrm::run_isolated_rotor(case_config(v), o->rotor_case(v));
@@ -180,7 +190,8 @@ std::function<int()> add_sweep_command(CLI::App& app) {
       csv << std::setprecision(6) << v << "," << r.induced_mean << "," << r.inflow.cosine.z() << "," << r.inflow.sine.z() << ","
           << r.inflow.mean.x() << "," << r.pitt_peters_mean << "," << r.pitt_peters_cosine << "," << r.momentum_theory << "," << vh << ","
           << r.induced_mean / r.pitt_peters_mean << "," << cfg.nodes << "," << cfg.reach << "," << r.cells_per_edge << ","
-          << r.simulated_seconds / r.steps << "," << r.steps << "," << r.wall_seconds << "\n";
+          << r.simulated_seconds / r.steps << "," << r.steps << "," << r.wall_seconds << "," << r.induced_std << ","
+          << r.induced_half_difference << "\n";
       csv.flush();
     }
     csv.close();

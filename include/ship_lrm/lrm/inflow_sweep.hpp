@@ -26,8 +26,12 @@ double cheeseman_bennett_ratio(double z_over_R, double speed, double induced_vel
 double hayden_ratio(double z_over_R);
 
 struct IsolatedRotorResult {
-  rotor::RotorInflow inflow;                            // time average, m/s (relative to the domain)
-  double induced_mean = 0;                              // inflow.mean.z (the stream has no z component)
+  rotor::RotorInflow inflow;  // time average, m/s (relative to the domain)
+  double induced_mean = 0;    // inflow.mean.z (the stream has no z component)
+  // How steady induced_mean is: the standard deviation of the samples (one every ~0.05 s) and the
+  // difference of the means over the second and the first half of the averaging window (samples are
+  // correlated, so the half-window difference, not std / sqrt(n), bounds the mean's uncertainty).
+  double induced_std = 0, induced_half_difference = 0;
   double pitt_peters_mean = 0, pitt_peters_cosine = 0;  // m/s, steady Pitt-Peters for the same load
   double momentum_theory = 0;                           // m/s, Glauert / hover momentum theory
   long steps = 0;
