@@ -5,6 +5,7 @@ usage: plot_flight.py trim TRIM.csv OUT.png [--reference MEASURED.csv]
        plot_flight.py doublet DOUBLET.csv OUT.png
        plot_flight.py sweep_inflow INFLOW_SWEEP.csv OUT.png
        plot_flight.py sweep_ground GROUND_SWEEP.csv OUT.png
+       plot_flight.py plane PLANE.csv OUT.png
 
 trim: power, the four controls and the attitudes over speed, laid out like thesis figs. 8.5-8.7.
 A reference CSV (e.g. digitised flight-test points) with any of the same column names is drawn as
@@ -14,10 +15,12 @@ sweep_inflow: LRM mean and cosine inflow over speed beside Pitt-Peters, both ove
 momentum-theory velocity (thesis figs. 8.1, 8.2).
 sweep_ground: hover, v_mean / v_mean(OGE) over z/R beside Cheeseman-Bennett and Hayden (fig. 8.9);
 forward, v_mean over speed per height beside Glauert times the forward-flight Cheeseman-Bennett
-factor (fig. 8.11).
+factor (fig. 8.11), and the ratio v_mean / v_mean(OGE) over speed beside Cheeseman-Bennett.
+plane: a sweep case's time-averaged x-z plane through the hub (`--planes`).
 """
 import argparse
 import csv
+import os
 import sys
 
 import matplotlib
@@ -173,13 +176,46 @@ def plot_sweep_ground(data, out):
     fig.savefig(out, dpi=110)
 
 
+def plot_plane(path, out):
+    """Time-averaged x-z plane through the hub (sweep --planes): downwash colour, in-plane streamlines
+    relative to the rotor, walls grey; z points down (FRD), the rotor disk is the black bar."""
+    import numpy as np
+    d = np.genfromtxt(path, delimiter=",", names=True)
+    xs, zs = np.unique(d["x_m"]), np.unique(d["z_m"])
+    ix, iz = np.searchsorted(xs, d["x_m"]), np.searchsorted(zs, d["z_m"])
+    grid = {k: np.full((zs.size, xs.size), np.nan) for k in ("u_x_m_s", "u_z_m_s", "wall")}
+    for k in grid:
+        grid[k][iz, ix] = d[k]
+    wall = grid["wall"] > 0.5
+    ux, uz = np.where(wall, 0.0, grid["u_x_m_s"]), np.where(wall, 0.0, grid["u_z_m_s"])
+    fig, ax = plt.subplots(figsize=(8, 6.5))
+    lim = np.nanmax(np.abs(uz)) or 1.0
+    m = ax.pcolormesh(xs, zs, np.where(wall, np.nan, uz), cmap="RdBu_r", vmin=-lim, vmax=lim, shading="nearest")
+    fig.colorbar(m, ax=ax, label="u_z [m/s] (positive down)")
+    ax.pcolormesh(xs, zs, np.where(wall, 1.0, np.nan), cmap="Greys", vmin=0, vmax=1.5, shading="nearest")
+    # the CSV's 6 digits make the spacing uneven in the last place; streamplot wants it exact
+    ax.streamplot(np.linspace(xs[0], xs[-1], xs.size), np.linspace(zs[0], zs[-1], zs.size), ux, uz, color="k", linewidth=0.6, density=1.6, arrowsize=0.7)
+    r = d["rotor_radius_m"][0]
+    ax.plot([-r, r], [0, 0], color="k", lw=4)
+    ax.set_xlim(xs[0], xs[-1])
+    ax.set_ylim(zs[-1], zs[0])  # z down
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [m] (forward)")
+    ax.set_ylabel("z [m] (down)")
+    ax.set_title(f"{os.path.basename(path)}: mean flow relative to the rotor", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("kind", choices=["trim", "doublet", "sweep_inflow", "sweep_ground"])
+    ap.add_argument("kind", choices=["trim", "doublet", "sweep_inflow", "sweep_ground", "plane"])
     ap.add_argument("csv")
     ap.add_argument("png")
     ap.add_argument("--reference")
     a = ap.parse_args()
+    if a.kind == "plane":
+        return plot_plane(a.csv, a.png)
     data = read(a.csv)
     if a.kind == "trim":
         plot_trim(data, a.png, read(a.reference) if a.reference else None)

@@ -1,6 +1,7 @@
 // Isolated rotor in the LRM domain against Pitt-Peters / momentum theory (see inflow_sweep.hpp).
 #include "ship_lrm/lrm/inflow_sweep.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <vector>
@@ -51,6 +52,16 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
     r.inflow.sine += in.sine / samples;
     r.inflow.cosine += in.cosine / samples;
     induced[static_cast<size_t>(k)] = in.mean.z();
+    if (c.centre_plane) {
+      DomainSlice s = domain_slice(d, 1);
+      if (k == 0) {
+        r.centre_plane = s;
+        for (Vec3& v : r.centre_plane.velocity) v /= static_cast<double>(samples);
+      } else {
+        for (size_t i = 0; i < s.velocity.size(); ++i) r.centre_plane.velocity[i] += s.velocity[i] / static_cast<double>(samples);
+        r.centre_plane.max_mach = std::max(r.centre_plane.max_mach, s.max_mach);
+      }
+    }
   }
   double square = 0, first = 0, second = 0;
   const long half = samples / 2;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "commands.hpp"
 #include "ship_lrm/lbm/lattice.hpp"
@@ -37,7 +38,7 @@ struct IsolatedRotorOptions {
   int nodes = 64;
   double reach = 1.25, thrust = 24525, settle = 4, average = 2;
   std::string backend = "auto", out;
-  bool overwrite = false, no_plot = false;
+  bool overwrite = false, no_plot = false, planes = false;
 
   void add_to(CLI::App& cmd, const std::string& outputs) {
     cmd.add_option("--N", nodes, "lattice nodes per 4R")->check(CLI::Range(16, 512))->capture_default_str();
@@ -49,6 +50,9 @@ struct IsolatedRotorOptions {
     cmd.add_option("--out", out, "output directory (" + outputs + ")")->required();
     cmd.add_flag("--overwrite", overwrite, "replace existing output files");
     cmd.add_flag("--no-plot", no_plot, "write the CSV only");
+    cmd.add_flag("--planes", planes,
+                 "also write each case's time-averaged x-z plane through the hub (plane_*.csv, .png: velocity relative to the "
+                 "rotor, streamlines)");
   }
   lrm::LrmConfig config() const {
     lrm::LrmConfig cfg;
@@ -63,9 +67,40 @@ struct IsolatedRotorOptions {
     c.thrust = thrust;
     c.settle = settle;
     c.average = average;
+    c.centre_plane = planes;
     return c;
   }
 };
+
+// "6", "0.5": a number as it appears in a file name.
+std::string tag(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// The averaged centre plane of one case: CSV (x, z in m from the hub, FRD; velocity relative to the
+// rotor in m/s; wall 0/1) and, unless --no-plot, a PNG.
+void write_plane(const fs::path& dir, const std::string& stem, const lrm::DomainSlice& s, double radius, bool png) {
+  const fs::path csv = dir / (stem + ".csv");
+  std::ofstream f(csv);
+  f << "x_m,z_m,u_x_m_s,u_y_m_s,u_z_m_s,wall,rotor_radius_m\n" << std::setprecision(6);
+  for (size_t i = 0; i < s.position.size(); ++i)
+    f << s.position[i].x() << "," << s.position[i].z() << "," << s.velocity[i].x() << "," << s.velocity[i].y() << "," << s.velocity[i].z()
+      << "," << static_cast<int>(s.wall[i]) << "," << radius << "\n";
+  f.close();
+  if (!f) throw std::runtime_error("could not write " + csv.string());
+  if (png) plot("plane", csv, dir / (stem + ".png"), "");
+}
+
+std::vector<std::string> with_extensions(const std::vector<std::string>& stems) {
+  std::vector<std::string> names;
+  for (const auto& n : stems) {
+    names.push_back(n + ".csv");
+    names.push_back(n + ".png");
+  }
+  return names;
+}
 
 std::function<int()> add_ground_sweep(CLI::App& sweep) {
   auto* ground = sweep.add_subcommand(
@@ -98,7 +133,17 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
     lrm::LrmConfig cfg = o->config();
     cfg.faces = faces_named(o->faces);
     const fs::path dir(o->out);
-    prepare_output(dir, {"ground_sweep.csv", "ground_sweep.png"}, o->overwrite);
+    const auto plane_stem = [](double v, double z_over_R) {
+      return "plane_V" + tag(v) + (z_over_R > 0 ? "_z" + tag(z_over_R) : std::string("_oge"));
+    };
+    std::vector<std::string> outputs{"ground_sweep.csv", "ground_sweep.png"};
+    if (o->planes)
+      for (double v : speeds) {
+        for (const auto& n : with_extensions({plane_stem(v, 0)})) outputs.push_back(n);
+        for (double h : heights)
+          for (const auto& n : with_extensions({plane_stem(v, h)})) outputs.push_back(n);
+      }
+    prepare_output(dir, outputs, o->overwrite);
     const auto case_for = [&](double v, double z_over_R) {
       lrm::IsolatedRotorCase c = o->rotor_case(v);
       c.ground_height = z_over_R * cfg.radius;  // 0: out of ground effect
@@ -121,11 +166,13 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
     for (double v : speeds) {
       const auto run_cfg = lrm::config_for_stream(cfg, v);
       const auto oge = lrm::run_isolated_rotor(run_cfg, case_for(v, 0));
+      if (o->planes) write_plane(dir, plane_stem(v, 0), oge.centre_plane, cfg.radius, !o->no_plot);
       const double vi = rotor::glauert_induced_velocity(o->thrust, cfg.density, cfg.radius, v);
       std::cout << std::fixed << std::setprecision(3) << "V = " << v << " m/s, out of ground effect: v_mean " << oge.induced_mean
                 << " m/s +- " << std::abs(oge.induced_half_difference) << " (momentum theory " << vi << ")" << std::endl;
       for (double h : heights) {
         const auto r = lrm::run_isolated_rotor(run_cfg, case_for(v, h));
+        if (o->planes) write_plane(dir, plane_stem(v, h), r.centre_plane, cfg.radius, !o->no_plot);
         const double ratio = r.induced_mean / oge.induced_mean;
         // the half-window differences of both means, combined (see IsolatedRotorResult)
         const double uncertainty =
@@ -171,7 +218,11 @@ std::function<int()> add_sweep_command(CLI::App& app) {
     const auto speeds = parse_speeds(o->speeds);
     const lrm::LrmConfig cfg = o->config();
     const fs::path dir(o->out);
-    prepare_output(dir, {"inflow_sweep.csv", "inflow_sweep.png"}, o->overwrite);
+    std::vector<std::string> outputs{"inflow_sweep.csv", "inflow_sweep.png"};
+    if (o->planes)
+      for (double v : speeds)
+        for (const auto& n : with_extensions({"plane_V" + tag(v)})) outputs.push_back(n);
+    prepare_output(dir, outputs, o->overwrite);
     const auto case_config = [&](double v) { return lrm::config_for_stream(cfg, v); };
     for (double v : speeds) {  // check every set-up before any long run
       lrm::LrmDomain probe(case_config(v));
@@ -184,6 +235,7 @@ std::function<int()> add_sweep_command(CLI::App& app) {
     const double vh = rotor::hover_induced_velocity(o->thrust, cfg.density, cfg.radius);
     for (double v : speeds) {
       const auto r = lrm::run_isolated_rotor(case_config(v), o->rotor_case(v));
+      if (o->planes) write_plane(dir, "plane_V" + tag(v), r.centre_plane, cfg.radius, !o->no_plot);
       std::cout << std::fixed << std::setprecision(3) << "V = " << v << " m/s: LRM mean " << r.induced_mean << " m/s, Pitt-Peters "
                 << r.pitt_peters_mean << " (ratio " << r.induced_mean / r.pitt_peters_mean << "); cosine " << r.inflow.cosine.z() << " vs "
                 << r.pitt_peters_cosine << "; " << r.steps << " steps in " << std::setprecision(1) << r.wall_seconds << " s\n";

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "ship_lrm/lrm/domain.hpp"
+#include "ship_lrm/lrm/domain_slice.hpp"
 
 namespace ship_lrm::lrm {
 
@@ -15,6 +16,7 @@ struct IsolatedRotorCase {
   double rotor_speed = 44.4;  // rad/s, only to non-dimensionalise the Pitt-Peters reference
   double ground_height = 0;   // m from the hub down to a ground plane moving at the stream; 0: none
   bool fuselage = false;      // a Bo 105-like fuselage (walls.hpp) below the disk
+  bool centre_plane = false;  // also average the x-z plane through the hub (IsolatedRotorResult::centre_plane)
 };
 
 // Algebraic ground-effect models at equal thrust, induced velocity in / out of ground effect for the
@@ -38,6 +40,10 @@ struct IsolatedRotorResult {
   double wall_seconds = 0, simulated_seconds = 0;
   int cells_per_edge = 0;
   double ground_effective_height = 0;  // m: the bounce-back wall lies half-way between fluid and wall cells
+  // With IsolatedRotorCase::centre_plane: the x-z plane through the hub (domain_slice normal 1),
+  // velocity relative to the rotor averaged over the same samples as the inflow; max_mach is the
+  // largest seen in any sample.
+  DomainSlice centre_plane;
 };
 
 IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotorCase& c);
