@@ -180,6 +180,9 @@ def plot_plane(path, out):
     """Time-averaged x-z plane through the hub (sweep --planes): downwash colour, in-plane streamlines
     relative to the rotor, walls grey; z points down (FRD), the rotor disk is the black bar."""
     import numpy as np
+
+    from plot_wake import imshow  # the centre-plane field with its walls masked, as for the ship wake
+
     d = np.genfromtxt(path, delimiter=",", names=True)
     xs, zs = np.unique(d["x_m"]), np.unique(d["z_m"])
     ix, iz = np.searchsorted(xs, d["x_m"]), np.searchsorted(zs, d["z_m"])
@@ -190,19 +193,16 @@ def plot_plane(path, out):
     ux, uz = np.where(wall, 0.0, grid["u_x_m_s"]), np.where(wall, 0.0, grid["u_z_m_s"])
     fig, ax = plt.subplots(figsize=(8, 6.5))
     lim = np.nanmax(np.abs(uz)) or 1.0
-    m = ax.pcolormesh(xs, zs, np.where(wall, np.nan, uz), cmap="RdBu_r", vmin=-lim, vmax=lim, shading="nearest")
-    fig.colorbar(m, ax=ax, label="u_z [m/s] (positive down)")
-    ax.pcolormesh(xs, zs, np.where(wall, 1.0, np.nan), cmap="Greys", vmin=0, vmax=1.5, shading="nearest")
+    im = imshow(ax, {"solid": wall.astype(float), "xs": xs, "zs": zs}, uz,
+                f"{os.path.basename(path)}: mean flow relative to the rotor", "RdBu_r", -lim, lim)
+    fig.colorbar(im, ax=ax, label="u_z [m/s] (positive down)")
     # the CSV's 6 digits make the spacing uneven in the last place; streamplot wants it exact
-    ax.streamplot(np.linspace(xs[0], xs[-1], xs.size), np.linspace(zs[0], zs[-1], zs.size), ux, uz, color="k", linewidth=0.6, density=1.6, arrowsize=0.7)
+    ax.streamplot(np.linspace(xs[0], xs[-1], xs.size), np.linspace(zs[0], zs[-1], zs.size), ux, uz,
+                  color="k", linewidth=0.6, density=1.6, arrowsize=0.7)
     r = d["rotor_radius_m"][0]
     ax.plot([-r, r], [0, 0], color="k", lw=4)
     ax.set_xlim(xs[0], xs[-1])
     ax.set_ylim(zs[-1], zs[0])  # z down
-    ax.set_aspect("equal")
-    ax.set_xlabel("x [m] (forward)")
-    ax.set_ylabel("z [m] (down)")
-    ax.set_title(f"{os.path.basename(path)}: mean flow relative to the rotor", fontsize=10)
     fig.tight_layout()
     fig.savefig(out, dpi=110)
 

@@ -53,14 +53,13 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
     r.inflow.cosine += in.cosine / samples;
     induced[static_cast<size_t>(k)] = in.mean.z();
     if (c.centre_plane) {
-      DomainSlice s = domain_slice(d, 1);
-      if (k == 0) {
+      const DomainSlice s = domain_slice(d, 1);
+      if (k == 0) {  // positions and walls of the plane; velocities summed below
         r.centre_plane = s;
-        for (Vec3& v : r.centre_plane.velocity) v /= static_cast<double>(samples);
-      } else {
-        for (size_t i = 0; i < s.velocity.size(); ++i) r.centre_plane.velocity[i] += s.velocity[i] / static_cast<double>(samples);
-        r.centre_plane.max_mach = std::max(r.centre_plane.max_mach, s.max_mach);
+        std::fill(r.centre_plane.velocity.begin(), r.centre_plane.velocity.end(), Vec3::Zero());
       }
+      for (size_t i = 0; i < s.velocity.size(); ++i) r.centre_plane.velocity[i] += s.velocity[i] / static_cast<double>(samples);
+      r.centre_plane.max_mach = std::max(r.centre_plane.max_mach, s.max_mach);
     }
   }
   double square = 0, first = 0, second = 0;

@@ -93,13 +93,10 @@ void write_plane(const fs::path& dir, const std::string& stem, const lrm::Domain
   if (png) plot("plane", csv, dir / (stem + ".png"), "");
 }
 
-std::vector<std::string> with_extensions(const std::vector<std::string>& stems) {
-  std::vector<std::string> names;
-  for (const auto& n : stems) {
-    names.push_back(n + ".csv");
-    names.push_back(n + ".png");
-  }
-  return names;
+// The two files write_plane makes for a stem (so that prepare_output checks them before any run).
+void add_plane_outputs(std::vector<std::string>& names, const std::string& stem) {
+  names.push_back(stem + ".csv");
+  names.push_back(stem + ".png");
 }
 
 std::function<int()> add_ground_sweep(CLI::App& sweep) {
@@ -139,9 +136,8 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
     std::vector<std::string> outputs{"ground_sweep.csv", "ground_sweep.png"};
     if (o->planes)
       for (double v : speeds) {
-        for (const auto& n : with_extensions({plane_stem(v, 0)})) outputs.push_back(n);
-        for (double h : heights)
-          for (const auto& n : with_extensions({plane_stem(v, h)})) outputs.push_back(n);
+        add_plane_outputs(outputs, plane_stem(v, 0));
+        for (double h : heights) add_plane_outputs(outputs, plane_stem(v, h));
       }
     prepare_output(dir, outputs, o->overwrite);
     const auto case_for = [&](double v, double z_over_R) {
@@ -220,8 +216,7 @@ std::function<int()> add_sweep_command(CLI::App& app) {
     const fs::path dir(o->out);
     std::vector<std::string> outputs{"inflow_sweep.csv", "inflow_sweep.png"};
     if (o->planes)
-      for (double v : speeds)
-        for (const auto& n : with_extensions({"plane_V" + tag(v)})) outputs.push_back(n);
+      for (double v : speeds) add_plane_outputs(outputs, "plane_V" + tag(v));
     prepare_output(dir, outputs, o->overwrite);
     const auto case_config = [&](double v) { return lrm::config_for_stream(cfg, v); };
     for (double v : speeds) {  // check every set-up before any long run
