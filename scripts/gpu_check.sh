@@ -3,6 +3,8 @@
 # tests (CUDA-vs-CPU among them) and the GPU benchmarks, and writes the results to $OUT (or
 # build/gpu/results). On a machine without CLI11 / GoogleTest, first run
 # scripts/prepare_gpu_carry.sh on a Debian machine and carry the .carry folder along.
+# With PREBUILT=DIR it skips the build and runs DIR's ship_lrm and test binaries (built elsewhere
+# with -DSHIP_LRM_CUDA=ON; shared libraries the GPU machine lacks, such as HDF5, in .carry/lib).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
@@ -17,18 +19,22 @@ extra=()
   nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.max.sm,clocks.max.mem --format=csv || true
   nvcc --version | tail -1
 } | tee "$out/device.txt"
-cmake -S . -B build/gpu -DCMAKE_BUILD_TYPE=Release -DSHIP_LRM_WITH_ROS=OFF -DSHIP_LRM_CUDA=ON \
-  -DCMAKE_CUDA_ARCHITECTURES="${CUDA_ARCH:-90}" "${extra[@]}" > "$out/configure.log"
-cmake --build build/gpu -j"$(nproc)" 2>&1 | tail -3
+bin="${PREBUILT:-build/gpu/bin}"
+if [ -z "${PREBUILT:-}" ]; then
+  cmake -S . -B build/gpu -DCMAKE_BUILD_TYPE=Release -DSHIP_LRM_WITH_ROS=OFF -DSHIP_LRM_CUDA=ON \
+    -DCMAKE_CUDA_ARCHITECTURES="${CUDA_ARCH:-90}" "${extra[@]}" > "$out/configure.log"
+  cmake --build build/gpu -j"$(nproc)" 2>&1 | tail -3
+fi
+[ -d .carry/lib ] && export LD_LIBRARY_PATH="$root/.carry/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export OMP_NUM_THREADS="${OMP_NUM_THREADS:-$(nproc)}"
 set +e
-build/gpu/bin/test_lbm --gtest_filter="${TEST_FILTER:-*-BluffBody.*}" 2>&1 | tee "$out/tests.log" | grep -E "OK|FAILED|SKIPPED|PASSED|max \|du\||reflected"
+"$bin/test_lbm" --gtest_filter="${TEST_FILTER:-*-BluffBody.*}" 2>&1 | tee "$out/tests.log" | grep -E "OK|FAILED|SKIPPED|PASSED|max \|du\||reflected"
 test_rc=${PIPESTATUS[0]}
 for t in test_flight test_lrm; do  # built when Eigen and yaml-cpp were found or carried
-  [ -x "build/gpu/bin/$t" ] && { "build/gpu/bin/$t" 2>&1 | tee "$out/$t.log" | grep -E "FAILED|PASSED" || test_rc=1; }
+  [ -x "$bin/$t" ] && { "$bin/$t" 2>&1 | tee "$out/$t.log" | grep -E "FAILED|PASSED" || test_rc=1; }
 done
 set -e
-bench=build/gpu/bin/ship_lrm
+bench="$bin/ship_lrm"
 {
   $bench bench lbm --backend cuda --size 256 --json
   $bench bench lbm --backend cuda --size 80 --json
@@ -38,5 +44,16 @@ bench=build/gpu/bin/ship_lrm
   $bench bench lrm --backend cuda --N 64 --reach 1.25 --seconds 5 --json || true   # issue 4 target: <= 0.05
   $bench bench lrm --backend cuda --N 128 --reach 1.25 --seconds 2 --json || true
 } | tee "$out/bench.jsonl"
+# issue 5: precompute MLUPS on the GPU (1/50 model at rest, N = 96) and the cost of serving the faces of
+# an N = 64 LRM domain from the default table (made here on the GPU)
+wake_dir="$(mktemp -d)"
+{
+  $bench wake --ship natogd --scale model --N 96 --motion static --wind 9.77 --duration 0.5 --interval 0.05 --backend cuda \
+    --no-plot --out "$wake_dir/m96.h5" 2>/dev/null | grep -a MLUPS
+  $bench wake --preset default --backend cuda --no-plot --out "$wake_dir/default.h5" 2>/dev/null | grep -a MLUPS
+  $bench bench wake --table "$wake_dir/default.h5" --N 64 --steps 200 --backend cuda --json
+  $bench bench wake --table "$wake_dir/default.h5" --N 64 --steps 100 --backend cpu --json
+} 2>&1 | tee "$out/wake.log" || true
+rm -rf "$wake_dir"
 echo "tests exit code: $test_rc"
 exit "$test_rc"

@@ -2,6 +2,7 @@
 // cell. Populations, cell types and boundary data live on the device; the host keeps the view.
 #include <cuda_runtime.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include "ship_lrm/lbm/benchmark.hpp"
@@ -51,6 +52,8 @@ class DeviceArray {
 constexpr int kBlock = 128;
 unsigned blocks(std::size_t n) { return static_cast<unsigned>((n + kBlock - 1) / kBlock); }
 
+// Pass 0 over every cell. (A split that ran the open-boundary passes on a second stream beside the
+// interior was measured slower on the H100: docs/benchmarks.md, session 12.)
 template <bool kOdd, bool kSmagorinsky, int kForce>
 __global__ void fluid_kernel(LatticeView v, const std::uint32_t* __restrict__ masks) {
   const std::size_t c = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
@@ -186,7 +189,11 @@ class CudaSolver final : public Solver {
     sync_view();
     do_initialize({}, {});
   }
-  ~CudaSolver() override { cudaFree(flag_); }
+  ~CudaSolver() override {
+    cudaFree(flag_);
+    if (staged_) cudaEventDestroy(staged_);
+    if (pinned_) cudaFreeHost(pinned_);
+  }
   const char* backend_name() const override { return "cuda"; }
   void synchronize() override { check(cudaDeviceSynchronize(), "step"); }
 
@@ -222,7 +229,10 @@ class CudaSolver final : public Solver {
     else
       gather_velocity_kernel<false><<<blocks(cells.size()), kBlock>>>(view_, gather_cells_.data(), cells.size(), gather_out_.data());
     check(cudaGetLastError(), "velocities");
-    gather_out_.download(out);
+    float* staging = pinned(out.size());  // page-locked: one direct copy, no staging by the driver
+    check(cudaMemcpyAsync(staging, gather_out_.data(), out.size() * sizeof(float), cudaMemcpyDeviceToHost, 0), "download");
+    check(cudaStreamSynchronize(0), "download");
+    std::copy(staging, staging + out.size(), out.begin());
   }
 
   void do_set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f) override {
@@ -237,7 +247,11 @@ class CudaSolver final : public Solver {
       scatter_cells_.upload(cells);
       scatter_host_ = cells;
     }
-    scatter_values_.upload(f);
+    if (scatter_values_.size() != f.size()) scatter_values_.resize(f.size());
+    float* staging = pinned(f.size());  // the copy is queued before the step's kernels, not waited for
+    std::copy(f.begin(), f.end(), staging);
+    check(cudaMemcpyAsync(scatter_values_.data(), staging, f.size() * sizeof(float), cudaMemcpyHostToDevice, 0), "upload");
+    check(cudaEventRecord(staged_, 0), "event");
     scatter_force_kernel<<<blocks(cells.size()), kBlock>>>(force_.data(), n, scatter_cells_.data(), cells.size(), scatter_values_.data());
     check(cudaGetLastError(), "cell forces");
   }
@@ -340,6 +354,19 @@ class CudaSolver final : public Solver {
   }
 
  private:
+  // Page-locked staging buffer for the listed-cell exchange. Before it is rewritten, the copy queued
+  // from it last (staged_) must be done.
+  float* pinned(std::size_t n) {
+    if (!staged_) check(cudaEventCreateWithFlags(&staged_, cudaEventDisableTiming), "event");
+    check(cudaEventSynchronize(staged_), "staging");
+    if (n > pinned_size_) {
+      if (pinned_) cudaFreeHost(pinned_);
+      pinned_ = nullptr;
+      check(cudaMallocHost(&pinned_, n * sizeof(float)), "cudaMallocHost");
+      pinned_size_ = n;
+    }
+    return pinned_;
+  }
   DeviceArray<pop_t> g_;
   DeviceArray<std::uint8_t> type_, tag_, bnd_normal_;
   DeviceArray<WallMotion> walls_;
@@ -352,6 +379,9 @@ class CudaSolver final : public Solver {
   std::vector<std::uint32_t> gather_host_, scatter_host_;
   DeviceArray<float> gather_out_, scatter_values_;
   unsigned long long* flag_ = nullptr;
+  cudaEvent_t staged_ = nullptr;
+  float* pinned_ = nullptr;
+  std::size_t pinned_size_ = 0;
 };
 
 }  // namespace

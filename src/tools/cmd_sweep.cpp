@@ -36,7 +36,7 @@ std::array<lbm::FaceType, 6> faces_named(const std::string& name) {
 // Options both isolated-rotor sweeps share: the domain, the rotor's load and averaging, the output.
 struct IsolatedRotorOptions {
   int nodes = 64;
-  double reach = 1.25, thrust = 24525, settle = 4, average = 2;
+  double reach = 1.25, thrust = 24525, settle = 4, average = 2, lattice_velocity = lrm::LrmConfig{}.reference_velocity;
   std::string backend = "auto", out;
   bool overwrite = false, no_plot = false, planes = false;
 
@@ -47,6 +47,11 @@ struct IsolatedRotorOptions {
     cmd.add_option("--settle", settle, "s simulated before averaging")->check(CLI::Range(0.0, 600.0))->capture_default_str();
     cmd.add_option("--average", average, "s averaged")->check(CLI::Range(0.01, 600.0))->capture_default_str();
     cmd.add_option("--backend", backend, "cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
+    cmd.add_option("--lattice-velocity", lattice_velocity,
+                   "m/s the lattice maps to Mach 0.3 (thesis table 6.4: 30), raised to a case's stream when that is faster; "
+                   "a larger value lowers the lattice Mach number (compressibility check) and shrinks the time step")
+        ->check(CLI::Range(1.0, 1e4))
+        ->capture_default_str();
     cmd.add_option("--out", out, "output directory (" + outputs + ")")->required();
     cmd.add_flag("--overwrite", overwrite, "replace existing output files");
     cmd.add_flag("--no-plot", no_plot, "write the CSV only");
@@ -58,6 +63,7 @@ struct IsolatedRotorOptions {
     lrm::LrmConfig cfg;
     cfg.nodes = nodes;
     cfg.reach = reach;
+    cfg.reference_velocity = lattice_velocity;
     cfg.backend = lbm::parse_backend(backend);
     return cfg;
   }
