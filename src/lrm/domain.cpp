@@ -219,7 +219,10 @@ void LrmDomain::set_motion(const Motion& m) {
     const auto& cells = solver_->lattice().boundary_cells();
     std::vector<float> values(4 * cells.size(), 0.0f);
     double fastest = 0;
-    for (size_t k = 0; k < cells.size(); ++k) {
+    const long ncells = static_cast<long>(cells.size());
+    // every step in a manoeuvre (omega changes) and at each wake-table refresh: on the OpenMP threads
+#pragma omp parallel for schedule(static) reduction(max : fastest)
+    for (long k = 0; k < ncells; ++k) {
       const size_t c = cells[k];
       const int i = static_cast<int>(c % edge_), j = static_cast<int>((c / edge_) % edge_);
       const int l = static_cast<int>(c / (static_cast<size_t>(edge_) * edge_));

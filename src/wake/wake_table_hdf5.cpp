@@ -412,14 +412,20 @@ void WakeTable::sample(double t, const std::vector<double>& xyz, std::vector<Wak
   std::array<int, 3> lo{info_.shape[0], info_.shape[1], info_.shape[2]}, hi{-1, -1, -1};
   std::vector<double> g(xyz.size());
   std::vector<char> in(np);
-  for (std::size_t p = 0; p < np; ++p) {
+  const long npl = static_cast<long>(np);
+  // Every point is independent: the loops over points run on the OpenMP threads (the LRM's faces
+  // have 10^4 - 10^5 points, sampled whenever they are due).
+#pragma omp parallel for schedule(static)
+  for (long p = 0; p < npl; ++p) {
     bool inside = true;
     for (int d = 0; d < 3; ++d) {
       g[3 * p + d] = (xyz[3 * p + d] - info_.origin[d]) / info_.spacing;
       if (!(g[3 * p + d] >= 0.0 && g[3 * p + d] <= info_.shape[d] - 1)) inside = false;
     }
     in[p] = inside;
-    if (!inside) continue;
+  }
+  for (std::size_t p = 0; p < np; ++p) {
+    if (!in[p]) continue;
     for (int d = 0; d < 3; ++d) {
       const int i0 = std::min(static_cast<int>(g[3 * p + d]), info_.shape[d] - 2);
       lo[d] = std::min(lo[d], i0);
@@ -438,7 +444,8 @@ void WakeTable::sample(double t, const std::vector<double>& xyz, std::vector<Wak
   const int f0 = std::min(static_cast<int>(ft), info_.frames - 1), f1 = std::min(f0 + 1, info_.frames - 1);
   const double at = ft - f0;
   const Window* w[2] = {&window(f0, lo, hi), &window(f1, lo, hi)};
-  for (std::size_t p = 0; p < np; ++p) {
+#pragma omp parallel for schedule(static)
+  for (long p = 0; p < npl; ++p) {
     if (!in[p]) {
       out[p] = free;
       continue;
