@@ -9,7 +9,7 @@ PACKAGES=(
   build-essential cmake clang-format
   libeigen3-dev libcli11-dev libgtest-dev libgmock-dev libyaml-cpp-dev libhdf5-dev
   catkin ros-core-dev libroscpp-dev ros-message-generation ros-message-runtime
-  libnodelet-dev libnodeletlib-dev pluginlib-dev python3-rostest librostest-dev
+  libnodelet-dev libnodeletlib-dev libnodeletlib-tools pluginlib-dev python3-rostest librostest-dev
   libtf2-ros-dev libdiagnostic-updater-dev libstd-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev libnav-msgs-dev
   libvisualization-msgs-dev libros-rosgraph-msgs-dev python3-rospy python3-roslib python3-roslaunch python3-rosbag
   python3-tf2-ros python3-std-msgs python3-geometry-msgs python3-sensor-msgs python3-nav-msgs python3-diagnostic-msgs
