@@ -3,6 +3,7 @@
 #include <cuda_runtime.h>
 
 #include <algorithm>
+#include <cstring>
 #include <sstream>
 
 #include "ship_lrm/lbm/benchmark.hpp"
@@ -141,6 +142,38 @@ __global__ void init_boundary_kernel(LatticeView v) {
   initialize_boundary_state(v, b);
 }
 
+// The velocity faces from a gridded field (grid_feed.hpp): the same per-cell functions as LrmDomain's
+// host path. Velocity inlets take the face velocity, impedance outlets take it as their reference and
+// its normal change (Solver::set_boundary_values). The largest face speed goes to *fastest (the bits
+// of a non-negative float order as the float). values: the view's boundary values, writable.
+__global__ void grid_feed_kernel(LatticeView v, float* values, GridFeed f, GridWindowView w0, GridWindowView w1, unsigned* fastest) {
+  const int b = blockIdx.x * blockDim.x + threadIdx.x;
+  if (b >= v.nbnd) return;
+  const std::uint32_t c = v.bnd_cell[b];
+  const auto t = static_cast<CellType>(v.type[c] & ~kGeneralBit);
+  if (t != CellType::VelocityInlet && t != CellType::ImpedanceOutlet) return;
+  int x, y, z;
+  cell_coords(v, c, x, y, z);
+  double r[3], air[3], u[3];
+  feed_cell_position(f, x, y, z, r);
+  grid_air(f, w0, w1, r, air);
+  face_lattice_velocity(air, f.omega, r, f.to_lattice, u);
+  float nu[3];
+  for (int a = 0; a < 3; ++a) nu[a] = static_cast<float>(u[a]);
+  float* value = values + 4 * b;
+  if (t == CellType::ImpedanceOutlet) value[3] = impedance_reference_shift(value[3], v.bnd_normal[b], value, nu);
+  for (int a = 0; a < 3; ++a) value[a] = nu[a];
+  const float speed = sqrtf(nu[0] * nu[0] + nu[1] * nu[1] + nu[2] * nu[2]);
+  atomicMax(fastest, isfinite(speed) ? __float_as_uint(speed) : 0x7f800000u);
+}
+
+// The reference change has been stepped: zero the 4th value of every impedance outlet.
+__global__ void clear_reference_change_kernel(LatticeView v, float* values) {
+  const int b = blockIdx.x * blockDim.x + threadIdx.x;
+  if (b >= v.nbnd) return;
+  if (static_cast<CellType>(v.type[v.bnd_cell[b]] & ~kGeneralBit) == CellType::ImpedanceOutlet) values[4 * b + 3] = 0.0f;
+}
+
 __global__ void copy_kernel(const float4* __restrict__ a, float4* __restrict__ b, std::size_t n) {
   for (std::size_t i = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x; i < n;
        i += static_cast<std::size_t>(gridDim.x) * blockDim.x)
@@ -191,6 +224,9 @@ class CudaSolver final : public Solver {
   }
   ~CudaSolver() override {
     cudaFree(flag_);
+    cudaFree(fastest_);
+    if (fastest_host_) cudaFreeHost(fastest_host_);
+    if (fed_) cudaEventDestroy(fed_);
     if (staged_) cudaEventDestroy(staged_);
     if (pinned_) cudaFreeHost(pinned_);
   }
@@ -215,6 +251,48 @@ class CudaSolver final : public Solver {
   }
 
   void do_set_boundary_values(const std::vector<float>& values) override { bnd_value_.upload(values); }
+
+  bool feeds_from_grid() const override { return true; }
+  void do_feed_from_grid(const GridWindowView& w0, std::uint64_t serial0, const GridWindowView& w1, std::uint64_t serial1,
+                         const GridFeed& feed) override {
+    GridWindowView d[2] = {w0, w1};
+    const std::uint64_t serial[2] = {serial0, serial1};
+    for (int s = 0; s < 2; ++s) {
+      const std::size_t n = 3 * static_cast<std::size_t>(d[s].n[0]) * d[s].n[1] * d[s].n[2];
+      if (serial[s] == 0 || serial[s] != window_serial_[s]) {  // a new window: one upload per table frame
+        if (window_[s].size() != n) window_[s].resize(n);
+        if (n) check(cudaMemcpy(window_[s].data(), d[s].u, n * sizeof(float), cudaMemcpyHostToDevice), "window upload");
+        window_serial_[s] = serial[s];
+      }
+      d[s].u = window_[s].data();
+    }
+    if (!fastest_) {
+      check(cudaMalloc(&fastest_, sizeof(unsigned)), "cudaMalloc");
+      check(cudaMallocHost(&fastest_host_, sizeof(unsigned)), "cudaMallocHost");
+      check(cudaEventCreateWithFlags(&fed_, cudaEventDisableTiming), "event");
+    }
+    // queued behind the step, not waited for: the speed is read at the next feed (do_fed_speed)
+    check(cudaMemsetAsync(fastest_, 0, sizeof(unsigned), 0), "memset");
+    if (view_.nbnd) grid_feed_kernel<<<blocks(view_.nbnd), kBlock>>>(view_, bnd_value_.data(), feed, d[0], d[1], fastest_);
+    check(cudaGetLastError(), "feed launch");
+    check(cudaMemcpyAsync(fastest_host_, fastest_, sizeof(unsigned), cudaMemcpyDeviceToHost, 0), "download");
+    check(cudaEventRecord(fed_, 0), "event");
+  }
+  float do_fed_speed() override {
+    if (!fed_) return 0.0f;
+    check(cudaEventSynchronize(fed_), "feed");
+    float f;
+    std::memcpy(&f, fastest_host_, sizeof f);
+    return f;
+  }
+  void do_pull_boundary_values() override { bnd_value_.download(boundary_values_); }
+  void do_clear_reference_change() override {
+    if (view_.nbnd) clear_reference_change_kernel<<<blocks(view_.nbnd), kBlock>>>(view_, bnd_value_.data());
+    check(cudaGetLastError(), "clear launch");
+    const auto& cells = lattice_.boundary_cells();
+    for (std::size_t b = 0; b < cells.size(); ++b)
+      if (static_cast<CellType>(lattice_.types()[cells[b]] & ~kGeneralBit) == CellType::ImpedanceOutlet) boundary_values_[4 * b + 3] = 0.0f;
+  }
 
   // Only the listed cells cross the bus (the default would download or upload whole fields).
   void do_velocities(bool next_odd, const std::vector<std::uint32_t>& cells, std::vector<float>& out) override {
@@ -379,6 +457,13 @@ class CudaSolver final : public Solver {
   std::vector<std::uint32_t> gather_host_, scatter_host_;
   DeviceArray<float> gather_out_, scatter_values_;
   unsigned long long* flag_ = nullptr;
+  // the gridded field the faces are fed from (feed_from_grid): two frames of a window, and the serial
+  // numbers of the windows they were copied from
+  DeviceArray<float> window_[2];
+  std::uint64_t window_serial_[2] = {0, 0};
+  unsigned* fastest_ = nullptr;       // largest face speed of the last feed (float bits)
+  unsigned* fastest_host_ = nullptr;  // its page-locked copy, valid once fed_ has passed
+  cudaEvent_t fed_ = nullptr;
   cudaEvent_t staged_ = nullptr;
   float* pinned_ = nullptr;
   std::size_t pinned_size_ = 0;

@@ -46,11 +46,45 @@ Solver::Solver(Lattice lattice) : lattice_(std::move(lattice)) {
 }
 
 void Solver::clear_reference_change() {
+  do_clear_reference_change();
+  reference_change_pending_ = false;
+}
+
+void Solver::do_clear_reference_change() {
   const auto& cells = lattice_.boundary_cells();
   for (std::size_t b = 0; b < cells.size(); ++b)
     if (static_cast<CellType>(lattice_.types()[cells[b]] & ~kGeneralBit) == CellType::ImpedanceOutlet) boundary_values_[4 * b + 3] = 0.0f;
-  reference_change_pending_ = false;
   do_set_boundary_values(boundary_values_);
+}
+
+void Solver::check_fed_speed() {
+  if (!feed_unchecked_) return;
+  feed_unchecked_ = false;
+  const float fastest = do_fed_speed();
+  if (!(fastest <= max_setup_speed()))
+    throw ConfigError("a face fed from the grid reached " + std::to_string(fastest) + " lattice units, beyond the Mach limit " +
+                      std::to_string(max_setup_speed()) + " (kMaxSetupMach c_s): lower the lattice velocity or raise N");
+}
+
+void Solver::pull_boundary_values() {
+  check_fed_speed();
+  if (!boundary_values_on_device_) return;
+  do_pull_boundary_values();
+  boundary_values_on_device_ = false;
+}
+
+const std::vector<float>& Solver::boundary_values() {
+  pull_boundary_values();
+  return boundary_values_;
+}
+
+void Solver::feed_from_grid(const GridWindowView& w0, std::uint64_t serial0, const GridWindowView& w1, std::uint64_t serial1,
+                            const GridFeed& feed) {
+  if (!feeds_from_grid()) throw ConfigError(std::string("feed_from_grid: the ") + backend_name() + " backend does not feed faces itself");
+  check_fed_speed();  // the previous feed's
+  do_feed_from_grid(w0, serial0, w1, serial1, feed);
+  boundary_values_on_device_ = feed_unchecked_ = true;
+  reference_change_pending_ = true;  // the impedance outlets follow the change in the next step
 }
 
 void Solver::set_boundary_values(const std::vector<float>& values) {
@@ -59,13 +93,13 @@ void Solver::set_boundary_values(const std::vector<float>& values) {
     if (!std::isfinite(v)) throw ConfigError("set_boundary_values: value is not finite");
   const auto& cells = lattice_.boundary_cells();
   const auto& normals = lattice_.boundary_normals();
+  pull_boundary_values();
   for (std::size_t b = 0; b < cells.size(); ++b) {
     const auto t = static_cast<CellType>(lattice_.types()[cells[b]] & ~kGeneralBit);
     float shift = 0.0f;
     if (t == CellType::ImpedanceOutlet) {
-      const int axis = normals[b] >> 1, sgn = (normals[b] & 1) ? 1 : -1;
       // outward normal change of the reference, added to any change not yet stepped
-      shift = boundary_values_[4 * b + 3] + sgn * (values[4 * b + axis] - boundary_values_[4 * b + axis]);
+      shift = impedance_reference_shift(boundary_values_[4 * b + 3], normals[b], &boundary_values_[4 * b], &values[4 * b]);
       reference_change_pending_ = reference_change_pending_ || shift != 0.0f;
     }
     for (int k = 0; k < 3; ++k) boundary_values_[4 * b + k] = values[4 * b + k];

@@ -175,7 +175,7 @@ void LrmDomain::rebuild(bool carry_flow) {
   const std::vector<float>& u = carried.u;
   const std::vector<std::uint32_t> old_boundary = solver_ ? solver_->lattice().boundary_cells() : std::vector<std::uint32_t>{};
   solver_ = lbm::make_solver(std::move(lat), cfg_.backend);
-  if (solver_->lattice().boundary_cells() != old_boundary) face_air_.clear();  // walls moved through a face
+  if (solver_->lattice().boundary_cells() != old_boundary) face_air_stale_ = true;  // walls moved through a face
   if (!disk_forces_.empty()) solver_->set_cell_forces(disk_cells_, disk_forces_);
   if (motion_set_) {
     motion_set_ = false;  // push the faces and the frame forces to the new solver
@@ -209,25 +209,47 @@ void LrmDomain::set_stream(const Vec3& air) {
 void LrmDomain::set_motion(const Motion& m) {
   for (const Vec3* v : {&m.air_velocity, &m.omega, &m.omega_dot, &m.hub_acceleration})
     if (!v->allFinite()) throw lbm::ConfigError("LRM: the domain motion is not finite");
-  const bool faces_same = motion_set_ && m.air_velocity == motion_.air_velocity && m.omega == motion_.omega;
+  // with a face grid the faces do not use air_velocity (set_face_grid)
+  const bool faces_same = motion_set_ && (grid_ || m.air_velocity == motion_.air_velocity) && m.omega == motion_.omega;
   const bool frame_same =
       motion_set_ && m.omega == motion_.omega && m.omega_dot == motion_.omega_dot && m.hub_acceleration == motion_.hub_acceleration;
   if (faces_same && frame_same) return;  // unchanged (the coupled step calls this every step)
   const double to_lattice = units_.dt() / units_.dx();
   const double cs = 1.0 / std::sqrt(3.0);
-  if (!faces_same) {
+  if (!faces_same && grid_ && solver_->feeds_from_grid()) {
+    // the field is interpolated where the faces live (one kernel); the Mach limit is checked there
+    lbm::GridFeed f = grid_->feed;
+    for (int d = 0; d < 3; ++d) f.omega[d] = m.omega[d];
+    f.to_lattice = to_lattice;
+    f.dx = units_.dx();
+    f.centre = centre_;
+    solver_->feed_from_grid(grid_->window[0], grid_->serial[0], grid_->window[1], grid_->serial[1], f);
+  } else if (!faces_same) {
     const auto& cells = solver_->lattice().boundary_cells();
+    const long ncells = static_cast<long>(cells.size());
+    const auto cell_position = [&](long k) {
+      const size_t c = cells[k];
+      return position(static_cast<int>(c % edge_), static_cast<int>((c / edge_) % edge_),
+                      static_cast<int>(c / (static_cast<size_t>(edge_) * edge_)));
+    };
+    if (grid_ && face_air_stale_) {  // the grid's air at each face cell (grid_feed.hpp, as the CUDA kernel)
+      face_air_.resize(cells.size());
+#pragma omp parallel for schedule(static)
+      for (long k = 0; k < ncells; ++k) {
+        const Vec3 r = cell_position(k);
+        lbm::grid_air(grid_->feed, grid_->window[0], grid_->window[1], r.data(), face_air_[k].data());
+      }
+      face_air_stale_ = false;
+    }
     std::vector<float> values(4 * cells.size(), 0.0f);
     double fastest = 0;
-    const long ncells = static_cast<long>(cells.size());
     // every step in a manoeuvre (omega changes) and at each wake-table refresh: on the OpenMP threads
 #pragma omp parallel for schedule(static) reduction(max : fastest)
     for (long k = 0; k < ncells; ++k) {
-      const size_t c = cells[k];
-      const int i = static_cast<int>(c % edge_), j = static_cast<int>((c / edge_) % edge_);
-      const int l = static_cast<int>(c / (static_cast<size_t>(edge_) * edge_));
-      const Vec3 air = face_air_.empty() ? m.air_velocity : face_air_[k];
-      const Vec3 u = (air - m.omega.cross(position(i, j, l))) * to_lattice;
+      const Vec3 r = cell_position(k);
+      const Vec3& air = grid_ ? face_air_[k] : m.air_velocity;
+      Vec3 u;
+      lbm::face_lattice_velocity(air.data(), m.omega.data(), r.data(), to_lattice, u.data());
       fastest = std::max(fastest, u.norm());
       for (int d = 0; d < 3; ++d) values[4 * k + d] = static_cast<float>(u[d]);
     }
@@ -252,34 +274,52 @@ void LrmDomain::set_motion(const Motion& m) {
   motion_set_ = true;
 }
 
-std::vector<Vec3> LrmDomain::face_positions() const {
-  const auto& cells = solver_->lattice().boundary_cells();
-  std::vector<Vec3> p(cells.size());
-  for (size_t k = 0; k < cells.size(); ++k) {
-    const size_t c = cells[k];
-    p[k] = position(static_cast<int>(c % edge_), static_cast<int>((c / edge_) % edge_),
-                    static_cast<int>(c / (static_cast<size_t>(edge_) * edge_)));
+void LrmDomain::set_face_grid(const lbm::GridWindowView (&window)[2], const std::uint64_t (&serial)[2], const lbm::GridFeed& grid,
+                              const Vec3& hub, const Mat3& rotation, const Vec3& hub_velocity) {
+  if (!hub.allFinite() || !rotation.allFinite() || !hub_velocity.allFinite())
+    throw lbm::ConfigError("LRM: the face grid's pose is not finite");
+  FaceGrid next;
+  next.feed = grid;
+  for (int d = 0; d < 3; ++d) {
+    next.feed.hub[d] = hub[d];
+    next.feed.hub_velocity[d] = hub_velocity[d];
+    for (int e = 0; e < 3; ++e) next.feed.rotation[3 * d + e] = rotation(d, e);
   }
-  return p;
-}
-
-void LrmDomain::set_face_air(std::vector<Vec3> air) {
-  if (!air.empty() && air.size() != solver_->lattice().boundary_cells().size())
-    throw lbm::ConfigError("LRM: set_face_air got " + std::to_string(air.size()) + " velocities for " +
-                           std::to_string(solver_->lattice().boundary_cells().size()) + " boundary cells");
-  for (const Vec3& v : air)
-    if (!v.allFinite()) throw lbm::ConfigError("LRM: a face air velocity is not finite");
-  std::vector<Vec3> previous = std::move(face_air_);
-  face_air_ = std::move(air);
-  const bool was_set = motion_set_;
+  for (int s = 0; s < 2; ++s) {
+    next.window[s] = window[s];
+    next.serial[s] = serial[s];
+    for (int old = 0; old < 2 && !next.data[s]; ++old)  // a window fed before is shared, not copied
+      if (grid_ && serial[s] != 0 && grid_->serial[old] == serial[s]) next.data[s] = grid_->data[old];
+    if (!next.data[s]) {
+      const std::size_t n = 3 * static_cast<std::size_t>(window[s].n[0]) * window[s].n[1] * window[s].n[2];
+      next.data[s] = std::make_shared<const std::vector<float>>(window[s].u, window[s].u + n);
+    }
+    next.window[s].u = next.data[s]->data();
+  }
+  std::optional<FaceGrid> previous = std::move(grid_);
+  std::vector<Vec3> previous_air = std::move(face_air_);
+  const bool was_set = motion_set_, was_stale = face_air_stale_;
+  grid_ = std::move(next);
+  face_air_stale_ = true;
   motion_set_ = false;  // push the faces again
   try {
     set_motion(motion_);
   } catch (...) {
-    face_air_ = std::move(previous);
+    grid_ = std::move(previous);
+    face_air_ = std::move(previous_air);
+    face_air_stale_ = was_stale;
     motion_set_ = was_set;
     throw;
   }
+}
+
+void LrmDomain::clear_face_grid() {
+  if (!grid_) return;
+  grid_.reset();
+  face_air_.clear();
+  face_air_stale_ = true;
+  motion_set_ = false;
+  set_motion(motion_);
 }
 
 void LrmDomain::restart_flow() {

@@ -1,7 +1,9 @@
 // Feeding the LRM's faces from a ship-wake table (see wake_feed.hpp).
 #include "ship_lrm/lrm/wake_feed.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 #include <sstream>
 
 namespace ship_lrm::lrm {
@@ -13,10 +15,8 @@ WakeFaceFeed::WakeFaceFeed(std::shared_ptr<wake::WakeTable> table) : table_(std:
 bool WakeFaceFeed::apply(LrmDomain& domain, double t, const Pose& pose, bool force) {
   const double dx = domain.units().dx();
   const double edge = dx * domain.cells_per_edge();
-  if (&domain != domain_ || domain.rebuilds() != rebuilds_ || positions_.empty()) {
-    positions_ = domain.face_positions();  // changes only when walls moved through a face
+  if (&domain != domain_ || !domain.has_face_grid()) {
     domain_ = &domain;
-    rebuilds_ = domain.rebuilds();
     force = true;
   }
   if (!force && fed_) {
@@ -26,23 +26,23 @@ bool WakeFaceFeed::apply(LrmDomain& domain, double t, const Pose& pose, bool for
         (pose.hub_velocity - last_.hub_velocity).norm() < 0.01 * std::abs(table_->info().free_stream[0]) + 1e-9)
       return false;
   }
+  // the box of the domain's cells in the table's frame: the rotated cube's corners
+  const double lo_r = -domain.centre() * dx, hi_r = (domain.cells_per_edge() - 1 - domain.centre()) * dx;
+  std::array<double, 3> lo{}, hi{};
+  lo.fill(std::numeric_limits<double>::infinity());
+  hi.fill(-std::numeric_limits<double>::infinity());
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 p = pose.hub + pose.rotation * Vec3(c & 1 ? hi_r : lo_r, c & 2 ? hi_r : lo_r, c & 4 ? hi_r : lo_r);
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = std::min(lo[d], p[d]);
+      hi[d] = std::max(hi[d], p[d]);
+    }
+  }
+  const wake::WakeTable::Frames f = table_->frames(t, lo, hi);
+  domain.set_face_grid(f.window, f.serial, f.grid, pose.hub, pose.rotation, pose.hub_velocity);
   fed_ = true;
   last_t_ = t;
   last_ = pose;
-  const std::vector<Vec3>& r = positions_;
-  xyz_.resize(3 * r.size());
-  for (std::size_t k = 0; k < r.size(); ++k) {
-    const Vec3 p = pose.hub + pose.rotation * r[k];
-    for (int d = 0; d < 3; ++d) xyz_[3 * k + d] = p[d];
-  }
-  table_->sample(t, xyz_, samples_);
-  std::vector<Vec3> air(r.size());
-  const Mat3 to_mr = pose.rotation.transpose();
-  for (std::size_t k = 0; k < r.size(); ++k) {
-    const Vec3 u(samples_[k].u[0], samples_[k].u[1], samples_[k].u[2]);
-    air[k] = to_mr * (u - pose.hub_velocity);
-  }
-  domain.set_face_air(std::move(air));
   return true;
 }
 
@@ -50,7 +50,8 @@ std::string WakeFeedBenchmark::to_json() const {
   std::ostringstream o;
   o << "{\"backend\": \"" << backend << "\", \"N\": " << nodes << ", \"cells_per_edge\": " << cells_per_edge << ", \"steps\": " << steps
     << ", \"refreshes\": " << refreshes << ", \"boundary_cells\": " << boundary_cells << ", \"window_loads\": " << window_loads
-    << ", \"step_s\": " << step_seconds << ", \"feed_s\": " << feed_seconds << ", \"feed_fraction\": " << feed_fraction() << "}";
+    << ", \"read_ahead_hits\": " << read_ahead_hits << ", \"step_s\": " << step_seconds << ", \"feed_s\": " << feed_seconds
+    << ", \"feed_fraction\": " << feed_fraction() << "}";
   return o.str();
 }
 
@@ -91,8 +92,9 @@ WakeFeedBenchmark run_wake_feed_benchmark(const std::string& table, const LrmCon
   r.nodes = c.nodes;
   r.cells_per_edge = domain.cells_per_edge();
   r.steps = steps;
-  r.boundary_cells = domain.face_positions().size();
+  r.boundary_cells = domain.solver().lattice().boundary_cells().size();
   r.window_loads = t->window_loads();
+  r.read_ahead_hits = t->window_read_ahead_hits();
   r.refreshes = refreshes;
   r.step_seconds = step_s / steps;
   r.feed_seconds = feed_s / steps;

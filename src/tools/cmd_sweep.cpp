@@ -37,7 +37,7 @@ std::array<lbm::FaceType, 6> faces_named(const std::string& name) {
 struct IsolatedRotorOptions {
   int nodes = 64;
   double reach = 1.25, thrust = 24525, settle = 4, average = 2, lattice_velocity = lrm::LrmConfig{}.reference_velocity;
-  std::string backend = "auto", out;
+  std::string backend = "auto", out, faces = "thesis";
   bool overwrite = false, no_plot = false, planes = false;
 
   void add_to(CLI::App& cmd, const std::string& outputs) {
@@ -52,6 +52,9 @@ struct IsolatedRotorOptions {
                    "a larger value lowers the lattice Mach number (compressibility check) and shrinks the time step")
         ->check(CLI::Range(1.0, 1e4))
         ->capture_default_str();
+    cmd.add_option("--faces", faces, "face set-up: thesis (velocity front/sides), open-sides, open (impedance everywhere)")
+        ->check(CLI::IsMember({"thesis", "open-sides", "open"}))
+        ->capture_default_str();
     cmd.add_option("--out", out, "output directory (" + outputs + ")")->required();
     cmd.add_flag("--overwrite", overwrite, "replace existing output files");
     cmd.add_flag("--no-plot", no_plot, "write the CSV only");
@@ -65,6 +68,7 @@ struct IsolatedRotorOptions {
     cfg.reach = reach;
     cfg.reference_velocity = lattice_velocity;
     cfg.backend = lbm::parse_backend(backend);
+    cfg.faces = faces_named(faces);
     return cfg;
   }
   lrm::IsolatedRotorCase rotor_case(double speed) const {
@@ -110,7 +114,7 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
       "ground",
       "Isolated rotor above a ground plane: v_mean / v_mean(out of ground effect) against Cheeseman-Bennett and Hayden (thesis 8.2.3)");
   struct Opts : IsolatedRotorOptions {
-    std::string mode = "hover", heights, speeds = "0,3,6,9,12,15", faces = "thesis";
+    std::string mode = "hover", heights, speeds = "0,3,6,9,12,15";
     bool fuselage = false;
   };
   auto o = std::make_shared<Opts>();
@@ -122,9 +126,6 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
                      "hub height over ground z/R: a comma list or start:step:stop (default hover 0.5,0.6,0.7,0.8,1,1.25,1.5,2; "
                      "forward 0.5,0.6,0.8,1)");
   ground->add_option("--speeds", o->speeds, "forward mode: speeds in m/s")->capture_default_str();
-  ground->add_option("--faces", o->faces, "face set-up: thesis (velocity front/sides), open-sides, open (impedance everywhere)")
-      ->check(CLI::IsMember({"thesis", "open-sides", "open"}))
-      ->capture_default_str();
   o->add_to(*ground, "ground_sweep.csv, .png");
   return [o, ground]() -> int {
     if (!ground->parsed()) return -1;
@@ -133,8 +134,7 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
     const auto speeds = hover ? std::vector<double>{0.0} : parse_speeds(o->speeds);
     for (double h : heights)
       if (!(h > 0)) throw lbm::ConfigError("--heights: z/R must be > 0, got " + std::to_string(h));
-    lrm::LrmConfig cfg = o->config();
-    cfg.faces = faces_named(o->faces);
+    const lrm::LrmConfig cfg = o->config();
     const fs::path dir(o->out);
     const auto plane_stem = [](double v, double z_over_R) {
       return "plane_V" + tag(v) + (z_over_R > 0 ? "_z" + tag(z_over_R) : std::string("_oge"));
@@ -232,7 +232,7 @@ std::function<int()> add_sweep_command(CLI::App& app) {
     std::ofstream csv(dir / "inflow_sweep.csv");
     csv << "speed_m_s,lrm_mean_m_s,lrm_cosine_m_s,lrm_sine_m_s,lrm_inplane_x_m_s,pitt_peters_mean_m_s,pitt_peters_cosine_m_s,"
            "momentum_theory_m_s,hover_momentum_theory_m_s,mean_over_pitt_peters,N,reach,cells_per_edge,time_step_s,steps,wall_s,"
-           "lrm_mean_std_m_s,lrm_mean_half_difference_m_s\n";
+           "lrm_mean_std_m_s,lrm_mean_half_difference_m_s,faces\n";
     const double vh = rotor::hover_induced_velocity(o->thrust, cfg.density, cfg.radius);
     for (double v : speeds) {
       const auto r = lrm::run_isolated_rotor(case_config(v), o->rotor_case(v));
@@ -244,7 +244,7 @@ std::function<int()> add_sweep_command(CLI::App& app) {
           << r.inflow.mean.x() << "," << r.pitt_peters_mean << "," << r.pitt_peters_cosine << "," << r.momentum_theory << "," << vh << ","
           << r.induced_mean / r.pitt_peters_mean << "," << cfg.nodes << "," << cfg.reach << "," << r.cells_per_edge << ","
           << r.simulated_seconds / r.steps << "," << r.steps << "," << r.wall_seconds << "," << r.induced_std << ","
-          << r.induced_half_difference << "\n";
+          << r.induced_half_difference << "," << o->faces << "\n";
       csv.flush();
     }
     csv.close();

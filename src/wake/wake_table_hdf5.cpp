@@ -2,9 +2,11 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <mutex>
 
 #include "ship_lrm/wake/wake_table.hpp"
@@ -292,6 +294,12 @@ struct WakeTable::Impl {
   std::string path;
 };
 
+struct WakeTable::ReadAhead {
+  std::future<bool> done;
+  Window w;
+  int frame = -1;
+};
+
 WakeTable::WakeTable(const std::string& path, std::size_t window_points) : impl_(std::make_unique<Impl>()), max_points_(window_points) {
   const Hdf5Lock hdf5_lock(hdf5_mutex());
   try {
@@ -349,6 +357,7 @@ WakeTable::WakeTable(const std::string& path, std::size_t window_points) : impl_
 }
 
 WakeTable::~WakeTable() {
+  if (ahead_ && ahead_->done.valid()) ahead_->done.wait();  // the read-ahead thread uses impl_
   const Hdf5Lock hdf5_lock(hdf5_mutex());
   impl_.reset();
 }
@@ -363,14 +372,56 @@ void WakeTable::read_frame(int frame, std::vector<float>& velocity, std::vector<
     throw TableError("wake table '" + impl_->path + "': frame " + std::to_string(frame) + " is unreadable (corrupt or truncated file)");
 }
 
-const WakeTable::Window& WakeTable::window(int frame, const std::array<int, 3>& lo, const std::array<int, 3>& hi) {
+namespace {
+bool covers_box(const std::array<int, 3>& wlo, const std::array<int, 3>& wn, const std::array<int, 3>& lo, const std::array<int, 3>& hi) {
+  for (int d = 0; d < 3; ++d)
+    if (wlo[d] > lo[d] || wlo[d] + wn[d] <= hi[d]) return false;
+  return true;
+}
+std::uint64_t next_window_serial() {
+  static std::atomic<std::uint64_t> serials{0};
+  return ++serials;
+}
+}  // namespace
+
+bool WakeTable::load(Window& w, int frame, const std::array<int, 3>& a, const std::array<int, 3>& n) const {
+  const std::size_t pts = static_cast<std::size_t>(n[0]) * n[1] * n[2];
+  w.u.resize(3 * pts);
+  w.rho.resize(pts);
   const Hdf5Lock hdf5_lock(hdf5_mutex());
+  return frame_box(impl_->vel, impl_->rho, false, static_cast<hsize_t>(frame), a, n, w.u.data(), w.rho.data());
+}
+
+void WakeTable::read_ahead(int frame, const Window& like) {
+  if (frame >= info_.frames || like.frame < 0) return;
+  if (ahead_ && ahead_->frame == frame) return;  // on its way or waiting
+  if (w_[frame % 2].frame == frame && w_[frame % 2].lo == like.lo && w_[frame % 2].n == like.n) return;
+  if (!ahead_) ahead_ = std::make_unique<ReadAhead>();
+  if (ahead_->done.valid()) ahead_->done.wait();  // an older read-ahead that was not used
+  ahead_->frame = frame;
+  ahead_->w.frame = frame;
+  ahead_->w.lo = like.lo;
+  ahead_->w.n = like.n;
+  ReadAhead* r = ahead_.get();
+  r->done = std::async(std::launch::async, [this, r] { return load(r->w, r->frame, r->w.lo, r->w.n); });
+}
+
+const WakeTable::Window& WakeTable::window(int frame, const std::array<int, 3>& lo, const std::array<int, 3>& hi) {
   // consecutive frames alternate between the two slots, so the two frames of one sample never evict
   // each other
   Window& w = w_[frame % 2];
-  if (w.frame == frame && w.lo[0] <= lo[0] && w.lo[1] <= lo[1] && w.lo[2] <= lo[2] && w.lo[0] + w.n[0] > hi[0] &&
-      w.lo[1] + w.n[1] > hi[1] && w.lo[2] + w.n[2] > hi[2])
-    return w;
+  if (w.frame == frame && covers_box(w.lo, w.n, lo, hi)) return w;
+  if (ahead_ && ahead_->frame == frame) {  // read ahead: wait for it (usually long done) and take it
+    const bool ok = ahead_->done.get();
+    ahead_->frame = -1;
+    if (ok && covers_box(ahead_->w.lo, ahead_->w.n, lo, hi)) {
+      std::swap(w, ahead_->w);
+      w.serial = next_window_serial();
+      ++loads_;
+      ++read_ahead_hits_;
+      return w;
+    }
+  }
   // load a window around [lo, hi] with a margin (the domain moves on), bounded by max_points_
   std::array<int, 3> a{}, n{};
   std::size_t need = 1, with_margin = 1;
@@ -389,19 +440,62 @@ const WakeTable::Window& WakeTable::window(int frame, const std::array<int, 3>& 
       a[d] = lo[d];
       n[d] = hi[d] - lo[d] + 1;
     }
-  const hsize_t f = static_cast<hsize_t>(frame);
-  const std::size_t pts = static_cast<std::size_t>(n[0]) * n[1] * n[2];
-  w.u.resize(3 * pts);
-  w.rho.resize(pts);
-  if (!frame_box(impl_->vel, impl_->rho, false, f, a, n, w.u.data(), w.rho.data())) {
+  if (!load(w, frame, a, n)) {
     w.frame = -1;
     throw TableError("wake table '" + impl_->path + "': frame " + std::to_string(frame) + " is unreadable (corrupt or truncated file)");
   }
   w.frame = frame;
   w.lo = a;
   w.n = n;
+  w.serial = next_window_serial();
   ++loads_;
   return w;
+}
+
+namespace {
+// Time of a sample as the frames around it and the weight of the second (clamped to the table).
+void frame_pair(const WakeTableInfo& info, double t, int& f0, int& f1, double& weight1) {
+  double ft = (t - info.start_time) / info.frame_interval;
+  ft = std::clamp(ft, 0.0, static_cast<double>(info.frames - 1));
+  f0 = std::min(static_cast<int>(ft), info.frames - 1);
+  f1 = std::min(f0 + 1, info.frames - 1);
+  weight1 = ft - f0;
+}
+}  // namespace
+
+WakeTable::Frames WakeTable::frames(double t, const std::array<double, 3>& lo_m, const std::array<double, 3>& hi_m) {
+  if (!std::isfinite(t)) throw TableError("wake table: sample time is not finite");
+  Frames r;
+  for (int d = 0; d < 3; ++d) {
+    if (!std::isfinite(lo_m[d]) || !std::isfinite(hi_m[d]) || lo_m[d] > hi_m[d])
+      throw TableError("wake table: the box to feed is not valid");
+    r.grid.origin[d] = info_.origin[d];
+    r.grid.shape[d] = info_.shape[d];
+    r.grid.free_stream[d] = static_cast<float>(info_.free_stream[d]);
+  }
+  r.grid.spacing = info_.spacing;
+  int f0, f1;
+  frame_pair(info_, t, f0, f1, r.grid.weight1);
+  // the grid cells the box touches, clipped to the table (a box that misses it: empty windows)
+  std::array<int, 3> lo{}, hi{};
+  for (int d = 0; d < 3; ++d) {
+    const double a = (lo_m[d] - info_.origin[d]) / info_.spacing, b = (hi_m[d] - info_.origin[d]) / info_.spacing;
+    if (b < 0.0 || a > info_.shape[d] - 1) return r;
+    lo[d] = std::clamp(static_cast<int>(std::floor(a)), 0, info_.shape[d] - 2);
+    hi[d] = std::clamp(static_cast<int>(std::floor(b)) + 1, 1, info_.shape[d] - 1);
+  }
+  const int fr[2] = {f0, f1};
+  for (int s = 0; s < 2; ++s) {
+    const Window& w = window(fr[s], lo, hi);
+    for (int d = 0; d < 3; ++d) {
+      r.window[s].lo[d] = w.lo[d];
+      r.window[s].n[d] = w.n[d];
+    }
+    r.window[s].u = w.u.data();
+    r.serial[s] = w.serial;
+  }
+  read_ahead(f1 + 1, w_[f1 % 2]);
+  return r;
 }
 
 void WakeTable::sample(double t, const std::vector<double>& xyz, std::vector<WakeSample>& out) {
@@ -417,12 +511,8 @@ void WakeTable::sample(double t, const std::vector<double>& xyz, std::vector<Wak
   // have 10^4 - 10^5 points, sampled whenever they are due).
 #pragma omp parallel for schedule(static)
   for (long p = 0; p < npl; ++p) {
-    bool inside = true;
-    for (int d = 0; d < 3; ++d) {
-      g[3 * p + d] = (xyz[3 * p + d] - info_.origin[d]) / info_.spacing;
-      if (!(g[3 * p + d] >= 0.0 && g[3 * p + d] <= info_.shape[d] - 1)) inside = false;
-    }
-    in[p] = inside;
+    for (int d = 0; d < 3; ++d) g[3 * p + d] = (xyz[3 * p + d] - info_.origin[d]) / info_.spacing;
+    in[p] = lbm::grid_inside(&g[3 * p], info_.shape.data());
   }
   for (std::size_t p = 0; p < np; ++p) {
     if (!in[p]) continue;
@@ -439,10 +529,9 @@ void WakeTable::sample(double t, const std::vector<double>& xyz, std::vector<Wak
     std::fill(out.begin(), out.end(), free);
     return;
   }
-  double ft = (t - info_.start_time) / info_.frame_interval;
-  ft = std::clamp(ft, 0.0, static_cast<double>(info_.frames - 1));
-  const int f0 = std::min(static_cast<int>(ft), info_.frames - 1), f1 = std::min(f0 + 1, info_.frames - 1);
-  const double at = ft - f0;
+  int f0, f1;
+  double at;
+  frame_pair(info_, t, f0, f1, at);
   const Window* w[2] = {&window(f0, lo, hi), &window(f1, lo, hi)};
 #pragma omp parallel for schedule(static)
   for (long p = 0; p < npl; ++p) {
@@ -451,30 +540,19 @@ void WakeTable::sample(double t, const std::vector<double>& xyz, std::vector<Wak
       continue;
     }
     double acc[4] = {0, 0, 0, 0};
-    for (int s = 0; s < 2; ++s) {
+    int i[3];
+    double fr[3];
+    lbm::grid_cell(&g[3 * p], info_.shape.data(), i, fr);
+    for (int s = 0; s < 2; ++s) {  // the same interpolation as the LRM's face feed (grid_feed.hpp)
       const Window& W = *w[s];
       const double wt = s == 0 ? 1.0 - at : at;
       if (wt == 0.0) continue;
-      int i[3];
-      double fr[3];
-      for (int d = 0; d < 3; ++d) {
-        i[d] = std::min(static_cast<int>(g[3 * p + d]), info_.shape[d] - 2);
-        fr[d] = g[3 * p + d] - i[d];
-        i[d] -= W.lo[d];
-      }
-      for (int c = 0; c < 8; ++c) {
-        const int dx = c & 1, dy = (c >> 1) & 1, dz = (c >> 2) & 1;
-        const double wc = wt * (dx ? fr[0] : 1 - fr[0]) * (dy ? fr[1] : 1 - fr[1]) * (dz ? fr[2] : 1 - fr[2]);
-        const std::size_t k = static_cast<std::size_t>(i[0] + dx) +
-                              static_cast<std::size_t>(W.n[0]) * (i[1] + dy + static_cast<std::size_t>(W.n[1]) * (i[2] + dz));
-        acc[0] += wc * W.u[3 * k];
-        acc[1] += wc * W.u[3 * k + 1];
-        acc[2] += wc * W.u[3 * k + 2];
-        acc[3] += wc * W.rho[k];
-      }
+      lbm::accumulate_trilinear(W.u.data(), 3, W.lo.data(), W.n.data(), i, fr, wt, acc);
+      lbm::accumulate_trilinear(W.rho.data(), 1, W.lo.data(), W.n.data(), i, fr, wt, acc + 3);
     }
     out[p] = {{static_cast<float>(acc[0]), static_cast<float>(acc[1]), static_cast<float>(acc[2])}, static_cast<float>(acc[3])};
   }
+  read_ahead(f1 + 1, *w[1]);
 }
 
 }  // namespace ship_lrm::wake

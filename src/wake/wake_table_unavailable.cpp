@@ -17,9 +17,11 @@ void WakeTableWriter::close() {}
 void WakeTableWriter::write_xdmf() const {}
 
 struct WakeTable::Impl {};
+struct WakeTable::ReadAhead {};
 WakeTable::WakeTable(const std::string&, std::size_t) { unavailable(); }
 WakeTable::~WakeTable() = default;
 void WakeTable::sample(double, const std::vector<double>&, std::vector<WakeSample>&) { unavailable(); }
+WakeTable::Frames WakeTable::frames(double, const std::array<double, 3>&, const std::array<double, 3>&) { unavailable(); }
 void WakeTable::read_frame(int, std::vector<float>&, std::vector<float>&) const { unavailable(); }
 const WakeTable::Window& WakeTable::window(int, const std::array<int, 3>&, const std::array<int, 3>&) { unavailable(); }
 

@@ -175,3 +175,25 @@ TEST(WakeTable, BadFilesGiveClearErrors) {
     }
   }
 }
+
+// The next frame is read ahead on a background thread: stepping through the frames, every frame
+// change after the first finds its window read in time, and the samples stay exact (linear field).
+TEST(WakeTable, ReadAheadServesTheNextFrame) {
+  const std::string path = write_linear("read_ahead.h5", false, 6);
+  WakeTable table(path);
+  const auto& in = table.info();
+  const std::vector<double> xyz = {-3.2, 1.1, -2.4, -0.7, -0.3, -3.1};  // inside the table
+  std::vector<WakeSample> got;
+  double worst = 0;
+  for (double t = in.start_time + 0.03; t < in.end_time(); t += 0.02) {
+    table.sample(t, xyz, got);
+    for (std::size_t p = 0; p < 2; ++p) {
+      const auto want = linear(xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2], t);
+      for (int d = 0; d < 3; ++d) worst = std::max(worst, std::abs(got[p].u[d] - want[d]));
+    }
+  }
+  EXPECT_LT(worst, 2e-5);
+  // frames 0 and 1 at the start, then frames 2 .. 5 as the time moves on: each read ahead
+  EXPECT_EQ(table.window_loads(), 6u);
+  EXPECT_EQ(table.window_read_ahead_hits(), 4u);
+}

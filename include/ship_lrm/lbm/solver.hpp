@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "ship_lrm/lbm/grid_feed.hpp"
 #include "ship_lrm/lbm/lattice.hpp"
 #include "ship_lrm/lbm/lattice_view.hpp"
 
@@ -83,6 +84,19 @@ class Solver {
   // normal velocity follows the change in the next step without a density jump (see
   // impedance_density). The 4th value is the solver's own.
   void set_boundary_values(const std::vector<float>& values);
+  // The values as the solver holds them (copied back from a GPU when a device feed wrote them).
+  const std::vector<float>& boundary_values();
+  // Whether this backend computes the velocity faces from a gridded field itself (feed_from_grid).
+  virtual bool feeds_from_grid() const { return false; }
+  // The velocity inlets and impedance outlets take the field of grid_feed.hpp (two frames of a window,
+  // placed and moving as `feed` says) as computed by the backend where the faces live (the CUDA
+  // backend: one kernel; only the feed's parameters, and a window when it changed, cross the bus).
+  // Windows are copied when their `serial` differs from the last copied one (0: always). Pressure
+  // outlets keep their values. The Mach limit (kMaxSetupMach c_s) is checked when the values are
+  // next needed on the host: the next feed, set_boundary_values or boundary_values() throws
+  // ConfigError if a fed face exceeded it. ConfigError on a backend without it (feeds_from_grid()).
+  void feed_from_grid(const GridWindowView& w0, std::uint64_t serial0, const GridWindowView& w1, std::uint64_t serial1,
+                      const GridFeed& feed);
   // Check the guard now (NaN / speed above mach_guard * c_s); throws DivergenceError.
   void check_divergence();
   // Raw populations (shifted, g = f - w) for tests: Q * cells, SoA.
@@ -104,6 +118,13 @@ class Solver {
   virtual void sync_view() = 0;                                               // after view_ parameters changed on the host
   virtual void sync_walls() {}                                                // after lattice_'s wall motions changed (device copy)
   virtual void do_set_boundary_values(const std::vector<float>& values) = 0;  // validated, 4 per cell
+  // Device-side faces (feeds_from_grid backends): compute them; the largest face speed of the last
+  // feed (lattice units; waits for it); copy the values into boundary_values_; zero the 4th value of
+  // the impedance cells (clear_reference_change) where the values live.
+  virtual void do_feed_from_grid(const GridWindowView&, std::uint64_t, const GridWindowView&, std::uint64_t, const GridFeed&) {}
+  virtual float do_fed_speed() { return 0.0f; }
+  virtual void do_pull_boundary_values() {}
+  virtual void do_clear_reference_change();
   // Listed cells only (validated): velocities out, force densities in; no whole-field traffic.
   virtual void do_velocities(bool next_odd, const std::vector<std::uint32_t>& cells, std::vector<float>& out) = 0;
   virtual void do_set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f) = 0;
@@ -113,8 +134,12 @@ class Solver {
   Lattice lattice_;
   std::vector<float> boundary_values_;  // host copy; 4th value of impedance cells: reference change
   bool reference_change_pending_ = false;
+  bool boundary_values_on_device_ = false;  // a device feed wrote them; boundary_values_ is stale
+  bool feed_unchecked_ = false;             // the last device feed's Mach limit not yet checked
   void clear_reference_change();
-  LatticeView view_;  // host copy of the view; device pointers in the CUDA backend
+  void check_fed_speed();       // ConfigError when the last device feed exceeded the Mach limit
+  void pull_boundary_values();  // boundary_values_ up to date (and checked)
+  LatticeView view_;            // host copy of the view; device pointers in the CUDA backend
   long steps_ = 0;
 };
 

@@ -17,6 +17,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 
 #include "ship_lrm/lbm/solver.hpp"
 #include "ship_lrm/lbm/units.hpp"
@@ -27,6 +28,7 @@
 namespace ship_lrm::lrm {
 
 using rotor::Vec3;
+using Mat3 = Eigen::Matrix3d;
 
 struct LrmConfig {
   int nodes = 64;                    // N: lattice nodes across 4R (thesis 6.4)
@@ -57,6 +59,7 @@ class LrmDomain {
   const LrmConfig& config() const { return cfg_; }
   const lbm::UnitConverter& units() const { return units_; }
   int cells_per_edge() const { return edge_; }
+  double centre() const { return centre_; }         // cell coordinate of the hub on each axis
   double time_step() const { return units_.dt(); }  // s, one LBM step
   double time() const { return steps_ * units_.dt(); }
   // Moves the domain's clock on by n LBM steps without stepping the flow (a real-time run that has
@@ -80,14 +83,20 @@ class LrmDomain {
   // A domain translating at constant velocity: set_motion with air_velocity only.
   void set_stream(const Vec3& air_velocity);
   const Motion& motion() const { return motion_; }
-  // The undisturbed air is not uniform (a ship wake): positions of the open-boundary cells (m, mr
-  // axes, from the hub; solver boundary-cell order) and the air velocity relative to the hub at each
-  // (m/s, mr axes), which then replaces motion().air_velocity at the faces (minus omega x r as
-  // before). An empty vector returns to the uniform air. After walls moved into or out of a face
-  // (rebuilds() changed) the cell list changes and the faces return to the uniform air until the
-  // next call. ConfigError for a wrong count or a face velocity beyond the Mach limit.
-  std::vector<Vec3> face_positions() const;
-  void set_face_air(std::vector<Vec3> air);
+  // The undisturbed air is not uniform (a ship wake): the faces take a gridded field (two frames of a
+  // window, wake::WakeTable::frames; lbm/grid_feed.hpp) seen from a hub at `hub` (m, grid frame) with
+  // axes `rotation` (mr -> grid) moving at `hub_velocity` (m/s, grid frame). Each face cell gets the
+  // field's air relative to the hub at its place, in mr axes, which replaces motion().air_velocity
+  // (minus omega x r as before) until clear_face_grid(). The domain keeps its own copy of the windows
+  // (copied again only when a serial changes), so walls that move through a face keep the field.
+  // Where the solver feeds its faces itself (CUDA), the field is interpolated on the device and the
+  // Mach limit is checked at the next feed (lbm::Solver::feed_from_grid); otherwise here, before
+  // anything changes. ConfigError for a non-finite pose or a face velocity beyond the Mach limit (the
+  // faces then stay as they were).
+  void set_face_grid(const lbm::GridWindowView (&window)[2], const std::uint64_t (&serial)[2], const lbm::GridFeed& grid, const Vec3& hub,
+                     const Mat3& rotation, const Vec3& hub_velocity);
+  void clear_face_grid();
+  bool has_face_grid() const { return grid_.has_value(); }
   // Position of a cell centre relative to the hub (m, mr axes).
   Vec3 position(int i, int j, int k) const;
   // Restart the flow: every cell at rest density with the current motion's air velocity (no wake).
@@ -129,7 +138,17 @@ class LrmDomain {
   std::unique_ptr<lbm::Solver> solver_;
   long steps_ = 0;
   Motion motion_;
-  std::vector<Vec3> face_air_;  // per boundary cell, or empty: uniform motion_.air_velocity
+  // The gridded field the faces take (set_face_grid), with its windows shared between successive
+  // feeds that reuse a window.
+  struct FaceGrid {
+    lbm::GridFeed feed;
+    lbm::GridWindowView window[2];
+    std::shared_ptr<const std::vector<float>> data[2];
+    std::uint64_t serial[2] = {0, 0};
+  };
+  std::optional<FaceGrid> grid_;
+  std::vector<Vec3> face_air_;  // host path: the grid's air per boundary cell (mr axes, m/s)
+  bool face_air_stale_ = true;  // the grid or the cell list changed since face_air_ was computed
   bool motion_set_ = false;
   std::vector<std::shared_ptr<WallSurface>> walls_;
   std::vector<std::int16_t> owner_;  // per cell: index of the wall that holds it, or -1

@@ -18,8 +18,9 @@ class WakeFaceFeed {
   // Where the domain is in the table's mean frame (hub, rotation, hub velocity; its own rotation and
   // accelerations reach the domain through LrmDomain::set_motion as before).
   using Pose = DomainPose;
-  // Samples the table at time t (table time) for every boundary cell and passes it to the domain, when
-  // the faces are due: the table time moved on by a quarter frame interval, or the domain by a quarter
+  // Passes the table's frames around time t (table time), for the window around the domain, to the
+  // domain (LrmDomain::set_face_grid: every boundary cell interpolated, on the GPU where the faces
+  // live there), when the faces are due: the table time moved on by a quarter frame interval, or the domain by a quarter
   // cell or by a quarter cell's angle at its edge, since the last refresh (the thesis holds a frame for
   // its whole 0.02 s interval, thesis 6.3). Returns whether it refreshed. force: refresh now.
   bool apply(LrmDomain& domain, double t, const Pose& pose, bool force = false);
@@ -27,14 +28,10 @@ class WakeFaceFeed {
 
  private:
   std::shared_ptr<wake::WakeTable> table_;
-  std::vector<Vec3> positions_;
-  std::size_t rebuilds_ = 0;
   const LrmDomain* domain_ = nullptr;
   bool fed_ = false;
   double last_t_ = 0;
   Pose last_;
-  std::vector<double> xyz_;
-  std::vector<wake::WakeSample> samples_;
 };
 
 // Cost of serving the faces against the LRM step (issue 5, acceptance 5): an LRM domain whose hub flies
@@ -43,7 +40,7 @@ class WakeFaceFeed {
 struct WakeFeedBenchmark {
   std::string backend;
   int nodes = 0, cells_per_edge = 0, steps = 0;
-  std::size_t boundary_cells = 0, window_loads = 0, refreshes = 0;
+  std::size_t boundary_cells = 0, window_loads = 0, read_ahead_hits = 0, refreshes = 0;
   double step_seconds = 0, feed_seconds = 0;  // per LBM step
   double feed_fraction() const { return feed_seconds / step_seconds; }
   std::string to_json() const;

@@ -1,7 +1,8 @@
 // The ship-wake table (issue 5; thesis 6.3): the air wake of a ship on a regular grid, one frame per
 // interval, in HDF5 (one chunk per frame; float16 or float32) with an XDMF side-car that ParaView
 // opens as a time series. The reader extracts the window around an LRM domain and interpolates
-// trilinearly in space and linearly in time; it holds only that window of two frames in memory.
+// trilinearly in space and linearly in time; it holds only that window of two frames in memory, and the
+// next frame's, read ahead on a background thread.
 //
 // Layout (format version 1):
 //   /velocity  [frames][nz][ny][nx][3]  m/s, mean frame (ship_motion.hpp), x forward, y starboard, z down
@@ -17,6 +18,8 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "ship_lrm/lbm/grid_feed.hpp"
 
 namespace ship_lrm::wake {
 
@@ -80,7 +83,7 @@ struct WakeSample {
 class WakeTable {
  public:
   // Opens and validates (TableError naming what is wrong). `window_points` bounds the memory: the
-  // cached window of two frames holds at most this many grid points per frame.
+  // cached window of two frames (and the frame read ahead) holds at most this many grid points per frame.
   explicit WakeTable(const std::string& path, std::size_t window_points = 4u << 20);
   ~WakeTable();
   WakeTable(const WakeTable&) = delete;
@@ -90,9 +93,21 @@ class WakeTable {
   // Samples at n points (xyz interleaved, m, mean frame) at time t. All points must lie in a box that
   // fits the window (else TableError); points outside the table get the free stream.
   void sample(double t, const std::vector<double>& xyz, std::vector<WakeSample>& out);
+  // The two frames around time t of a window holding the box [lo, hi] (m, mean frame), for callers
+  // that interpolate themselves (lbm/grid_feed.hpp: the LRM's faces, on the host or the GPU). The
+  // views point into the table's window memory and stay valid until the next sample() or frames()
+  // call. serial: a number unique to each loaded window (process-wide), so that a copy of it (on a
+  // GPU) is made once. A box that misses the table gives empty windows (everything free stream).
+  struct Frames {
+    lbm::GridWindowView window[2];
+    std::uint64_t serial[2] = {0, 0};
+    lbm::GridFeed grid;  // the grid's geometry, the time weight and the free stream filled in
+  };
+  Frames frames(double t, const std::array<double, 3>& lo, const std::array<double, 3>& hi);
   // One frame's grid values (tests, plots): velocity 3 per point and density.
   void read_frame(int frame, std::vector<float>& velocity, std::vector<float>& density) const;
-  std::size_t window_loads() const { return loads_; }  // hyperslab reads so far
+  std::size_t window_loads() const { return loads_; }                      // hyperslab reads so far (read-ahead included)
+  std::size_t window_read_ahead_hits() const { return read_ahead_hits_; }  // of those, read on the background thread in time
 
  private:
   struct Impl;
@@ -104,9 +119,19 @@ class WakeTable {
     int frame = -1;
     std::array<int, 3> lo{0, 0, 0}, n{0, 0, 0};
     std::vector<float> u, rho;
+    std::uint64_t serial = 0;
   };
   Window w_[2];
   const Window& window(int frame, const std::array<int, 3>& lo, const std::array<int, 3>& hi);
+  // Read-ahead: after each sample()/frames() the frame after the later one is read on a background
+  // thread into a third window with the same box, so that the next frame change finds it in memory
+  // (HDF5 reads and float16 conversion take milliseconds: more than a GPU step). HDF5 calls are
+  // serialised by a process-wide lock.
+  struct ReadAhead;
+  std::unique_ptr<ReadAhead> ahead_;
+  std::size_t read_ahead_hits_ = 0;
+  void read_ahead(int frame, const Window& like);
+  bool load(Window& w, int frame, const std::array<int, 3>& a, const std::array<int, 3>& n) const;
 };
 
 }  // namespace ship_lrm::wake
