@@ -2,27 +2,35 @@
 // exactly the domain that the uniform stream gives, and a refresh happens only when it is due.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-
 #include "ship_lrm/lrm/wake_feed.hpp"
+#include "temp_path.hpp"
 
 using namespace ship_lrm;
-namespace fs = std::filesystem;
 
-TEST(WakeFaceFeed, UniformTableGivesTheUniformStreamDomain) {
-  const fs::path dir = fs::temp_directory_path() / "ship_lrm_test_feed";
-  fs::create_directories(dir);
-  const std::string path = (dir / "uniform.h5").string();
+namespace {
+
+std::string temp(const std::string& name) { return ship_lrm::test::temp_path("ship_lrm_test_feed", name); }
+
+// A float32 full-scale table without a ship: a 2 m grid of `shape` points from `origin`, 0.1 s frames.
+wake::WakeTableInfo table_info(const std::array<double, 3>& origin, const std::array<int, 3>& shape) {
   wake::WakeTableInfo info;
-  info.origin = {-60, -30, -30};
+  info.origin = origin;
   info.spacing = 2.0;
-  info.shape = {61, 31, 31};
+  info.shape = shape;
   info.frame_interval = 0.1;
   info.free_stream = {-20, 0, 0};
   info.ship = "none";
   info.scale = "full";
   info.motion = "static";
   info.half_precision = false;
+  return info;
+}
+
+}  // namespace
+
+TEST(WakeFaceFeed, UniformTableGivesTheUniformStreamDomain) {
+  const std::string path = temp("uniform.h5");
+  const wake::WakeTableInfo info = table_info({-60, -30, -30}, {61, 31, 31});
   const Eigen::Vector3d wind(-12.0, 1.0, 0.5);  // inside the table: not the free stream
   {
     wake::WakeTableWriter w(path, info);
@@ -73,18 +81,8 @@ struct LinearTable {
     u0 *= scale;
     G *= scale;
     a *= scale;
-    const fs::path dir = fs::temp_directory_path() / "ship_lrm_test_feed";
-    fs::create_directories(dir);
-    path = (dir / name).string();
-    info.origin = {-40, -40, -45};
-    info.spacing = 2.0;
-    info.shape = {41, 41, 41};
-    info.frame_interval = 0.1;
-    info.free_stream = {-20, 0, 0};
-    info.ship = "none";
-    info.scale = "full";
-    info.motion = "static";
-    info.half_precision = false;
+    path = temp(name);
+    info = table_info({-40, -40, -45}, {41, 41, 41});
     wake::WakeTableWriter w(path, info);
     for (int f = 0; f < 2; ++f) {
       std::vector<float> u(3 * info.points()), rho(info.points(), 1.1934f);
