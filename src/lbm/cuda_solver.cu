@@ -286,12 +286,10 @@ class CudaSolver final : public Solver {
     return f;
   }
   void do_pull_boundary_values() override { bnd_value_.download(boundary_values_); }
+  // the device copy may be newer than the host's (a device feed): clear it in place, no upload
   void do_clear_reference_change() override {
     if (view_.nbnd) clear_reference_change_kernel<<<blocks(view_.nbnd), kBlock>>>(view_, bnd_value_.data());
     check(cudaGetLastError(), "clear launch");
-    const auto& cells = lattice_.boundary_cells();
-    for (std::size_t b = 0; b < cells.size(); ++b)
-      if (static_cast<CellType>(lattice_.types()[cells[b]] & ~kGeneralBit) == CellType::ImpedanceOutlet) boundary_values_[4 * b + 3] = 0.0f;
   }
 
   // Only the listed cells cross the bus (the default would download or upload whole fields).

@@ -46,16 +46,14 @@ Solver::Solver(Lattice lattice) : lattice_(std::move(lattice)) {
 }
 
 void Solver::clear_reference_change() {
+  const auto& cells = lattice_.boundary_cells();
+  for (std::size_t b = 0; b < cells.size(); ++b)
+    if (static_cast<CellType>(lattice_.types()[cells[b]] & ~kGeneralBit) == CellType::ImpedanceOutlet) boundary_values_[4 * b + 3] = 0.0f;
   do_clear_reference_change();
   reference_change_pending_ = false;
 }
 
-void Solver::do_clear_reference_change() {
-  const auto& cells = lattice_.boundary_cells();
-  for (std::size_t b = 0; b < cells.size(); ++b)
-    if (static_cast<CellType>(lattice_.types()[cells[b]] & ~kGeneralBit) == CellType::ImpedanceOutlet) boundary_values_[4 * b + 3] = 0.0f;
-  do_set_boundary_values(boundary_values_);
-}
+void Solver::do_clear_reference_change() { do_set_boundary_values(boundary_values_); }
 
 void Solver::check_fed_speed() {
   if (!feed_unchecked_) return;

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Face set-ups of the LRM domain for the ground-effect study (issue 4, acceptance 4).
+// Face set-ups of the LRM domain for the isolated-rotor sweeps (issue 4, acceptances 2 and 4).
 std::array<lbm::FaceType, 6> faces_named(const std::string& name) {
   lrm::LrmConfig c;
   if (name == "thesis") return c.faces;  // velocity front, left, right; impedance back, top, bottom

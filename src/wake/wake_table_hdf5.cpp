@@ -516,10 +516,12 @@ void WakeTable::sample(double t, const std::vector<double>& xyz, std::vector<Wak
   }
   for (std::size_t p = 0; p < np; ++p) {
     if (!in[p]) continue;
+    int i[3];
+    double fr[3];
+    lbm::grid_cell(&g[3 * p], info_.shape.data(), i, fr);
     for (int d = 0; d < 3; ++d) {
-      const int i0 = std::min(static_cast<int>(g[3 * p + d]), info_.shape[d] - 2);
-      lo[d] = std::min(lo[d], i0);
-      hi[d] = std::max(hi[d], i0 + 1);
+      lo[d] = std::min(lo[d], i[d]);
+      hi[d] = std::max(hi[d], i[d] + 1);
     }
   }
   const WakeSample free{

@@ -119,8 +119,9 @@ class Solver {
   virtual void sync_walls() {}                                                // after lattice_'s wall motions changed (device copy)
   virtual void do_set_boundary_values(const std::vector<float>& values) = 0;  // validated, 4 per cell
   // Device-side faces (feeds_from_grid backends): compute them; the largest face speed of the last
-  // feed (lattice units; waits for it); copy the values into boundary_values_; zero the 4th value of
-  // the impedance cells (clear_reference_change) where the values live.
+  // feed (lattice units; waits for it); copy the values into boundary_values_. do_clear_reference_change:
+  // after the host copy's impedance 4th values were zeroed, the same where the values live (default:
+  // upload the host copy).
   virtual void do_feed_from_grid(const GridWindowView&, std::uint64_t, const GridWindowView&, std::uint64_t, const GridFeed&) {}
   virtual float do_fed_speed() { return 0.0f; }
   virtual void do_pull_boundary_values() {}
