@@ -126,6 +126,8 @@ Lattice::Lattice(const LatticeConfig& cfg) : cfg_(cfg) {
                         ": a moving wall face must move tangentially (normal velocity component must be 0)");
     if (fc.type == FaceType::PressureOutlet && !(fc.density > 0.0f && fc.density < 2.0f))
       throw ConfigError(std::string("face ") + kFaceName[f] + ": outlet density must lie in (0, 2) lattice units");
+    if (!(fc.pressure_relaxation >= 0.0f && fc.pressure_relaxation < 1.0f))
+      throw ConfigError(std::string("face ") + kFaceName[f] + ": the outlet's pressure relaxation must lie in [0, 1) per step");
     if (open_face(fc.type) && n[f / 2] < 5)
       throw ConfigError(std::string("face ") + kFaceName[f] + ": open boundaries need at least 5 cells across the domain");
   }

@@ -39,6 +39,7 @@ Solver::Solver(Lattice lattice) : lattice_(std::move(lattice)) {
     view_.face[f] = static_cast<std::uint8_t>(cfg.faces[f].type);
     for (int a = 0; a < 3; ++a) view_.face_velocity[f][a] = cfg.faces[f].velocity[a];
     view_.face_inflow_reference[f] = cfg.faces[f].inflow_from_reference ? 1 : 0;
+    view_.face_pressure_relaxation[f] = cfg.faces[f].pressure_relaxation;
   }
   view_.params = cfg.collision;
   view_.nbnd = static_cast<int>(lattice_.boundary_cells().size());

@@ -13,6 +13,8 @@ namespace {
 lbm::UnitReference unit_reference(const LrmConfig& c) {
   if (!(c.reach >= 1.0))
     throw lbm::ConfigError("LRM: the reach factor a must be >= 1 (domain edge a * 4R), got " + std::to_string(c.reach));
+  for (double s : c.outlet_sigma)
+    if (!(s >= 0.0 && s <= 10.0)) throw lbm::ConfigError("LRM: the outlet sigma must lie in [0, 10], got " + std::to_string(s));
   if (c.nodes < 16) throw lbm::ConfigError("LRM: N must be >= 16 nodes per 4R, got " + std::to_string(c.nodes));
   if (!(c.radius > 0)) throw lbm::ConfigError("LRM: the rotor radius must be > 0");
   lbm::UnitReference r;
@@ -34,6 +36,11 @@ lbm::Lattice make_lattice(const LrmConfig& c, const lbm::UnitConverter& u, int e
   for (int f = 0; f < 6; ++f) {
     lc.faces[f].type = c.faces[f];
     lc.faces[f].inflow_from_reference = true;  // the faces know the undisturbed air (set_motion)
+    // Poinsot & Lele (1992) eq. 40 in lattice units (c_s per step, L = the edge in cells); the stream's
+    // Mach number is that of the reference velocity (0.3 c_s) at most
+    const double mach = 0.3;
+    if (c.faces[f] == lbm::FaceType::ImpedanceOutlet)
+      lc.faces[f].pressure_relaxation = static_cast<float>(c.outlet_sigma[f] * (1.0 - mach * mach) / std::sqrt(3.0) / (edge - 1));
   }
   lc.mach_guard = 0.9f;
   return lbm::Lattice(lc);
@@ -251,6 +258,11 @@ void LrmDomain::set_motion(const Motion& m) {
       Vec3 u;
       lbm::face_lattice_velocity(air.data(), m.omega.data(), r.data(), to_lattice, u.data());
       fastest = std::max(fastest, u.norm());
+      const size_t c = cells[k];
+      if ((solver_->lattice().types()[c] & ~lbm::kGeneralBit) == static_cast<std::uint8_t>(lbm::CellType::PressureOutlet)) {
+        values[4 * k] = 1.0f;  // the undisturbed air's density (a pressure outlet holds its density)
+        continue;
+      }
       for (int d = 0; d < 3; ++d) values[4 * k + d] = static_cast<float>(u[d]);
     }
     if (fastest > lbm::kMaxSetupMach * cs)

@@ -30,13 +30,19 @@ std::array<lbm::FaceType, 6> faces_named(const std::string& name) {
     c.faces[2] = c.faces[3] = lbm::FaceType::ImpedanceOutlet;
     return c.faces;
   }
-  throw lbm::ConfigError("unknown face set-up '" + name + "' (thesis, open-sides or open)");
+  if (name == "pressure") {  // velocity front and sides; pressure outlets (ambient density) back, top, bottom
+    for (int f : {0, 4, 5}) c.faces[f] = lbm::FaceType::PressureOutlet;
+    return c.faces;
+  }
+  throw lbm::ConfigError("unknown face set-up '" + name + "' (thesis, open-sides, open or pressure)");
 }
 
 // Options both isolated-rotor sweeps share: the domain, the rotor's load and averaging, the output.
 struct IsolatedRotorOptions {
   int nodes = 64;
   double reach = 1.25, thrust = 24525, settle = 4, average = 2, lattice_velocity = lrm::LrmConfig{}.reference_velocity;
+  double outlet_sigma = 0.0;
+  std::vector<std::string> relaxed_faces = {"back", "top", "bottom"};
   std::string backend = "auto", out, faces = "thesis";
   bool overwrite = false, no_plot = false, planes = false;
 
@@ -52,8 +58,17 @@ struct IsolatedRotorOptions {
                    "a larger value lowers the lattice Mach number (compressibility check) and shrinks the time step")
         ->check(CLI::Range(1.0, 1e4))
         ->capture_default_str();
-    cmd.add_option("--faces", faces, "face set-up: thesis (velocity front/sides), open-sides, open (impedance everywhere)")
-        ->check(CLI::IsMember({"thesis", "open-sides", "open"}))
+    cmd.add_option("--faces", faces,
+                   "face set-up: thesis (velocity front/sides), open-sides, open (impedance everywhere), pressure (pressure outlets "
+                   "back/top/bottom)")
+        ->check(CLI::IsMember({"thesis", "open-sides", "open", "pressure"}))
+        ->capture_default_str();
+    cmd.add_option("--outlet-sigma", outlet_sigma,
+                   "impedance faces: relaxation of their pressure to the ambient (Poinsot & Lele 1992 sigma; 0: the thesis' outlet)")
+        ->check(CLI::Range(0.0, 10.0))
+        ->capture_default_str();
+    cmd.add_option("--relaxed-faces", relaxed_faces, "impedance faces that --outlet-sigma applies to")
+        ->check(CLI::IsMember({"back", "front", "left", "right", "top", "bottom"}))
         ->capture_default_str();
     cmd.add_option("--out", out, "output directory (" + outputs + ")")->required();
     cmd.add_flag("--overwrite", overwrite, "replace existing output files");
@@ -62,6 +77,14 @@ struct IsolatedRotorOptions {
                  "also write each case's time-averaged x-z plane through the hub (plane_*.csv, .png: velocity relative to the "
                  "rotor, streamlines)");
   }
+  // The faces column of the CSVs: the set-up, and the relaxed outlets when there are any.
+  std::string faces_label() const {
+    if (!(outlet_sigma > 0)) return faces;
+    std::ostringstream s;
+    s << faces << ";sigma=" << outlet_sigma << ":";
+    for (size_t k = 0; k < relaxed_faces.size(); ++k) s << (k ? "/" : "") << relaxed_faces[k];
+    return s.str();
+  }
   lrm::LrmConfig config() const {
     lrm::LrmConfig cfg;
     cfg.nodes = nodes;
@@ -69,6 +92,8 @@ struct IsolatedRotorOptions {
     cfg.reference_velocity = lattice_velocity;
     cfg.backend = lbm::parse_backend(backend);
     cfg.faces = faces_named(faces);
+    const std::vector<std::string> names = {"back", "front", "left", "right", "top", "bottom"};
+    for (const auto& f : relaxed_faces) cfg.outlet_sigma[std::find(names.begin(), names.end(), f) - names.begin()] = outlet_sigma;
     return cfg;
   }
   lrm::IsolatedRotorCase rotor_case(double speed) const {
@@ -187,9 +212,9 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
         csv << std::setprecision(6) << o->mode << "," << v << "," << h << "," << r.ground_effective_height / cfg.radius << ","
             << r.induced_mean << "," << oge.induced_mean << "," << ratio << "," << cb << ",";
         if (hover) csv << lrm::hayden_ratio(h);
-        csv << "," << vi << "," << o->faces << "," << cfg.nodes << "," << cfg.reach << "," << r.steps << "," << r.wall_seconds << ","
-            << r.induced_std << "," << r.induced_half_difference << "," << oge.induced_std << "," << oge.induced_half_difference << ","
-            << uncertainty << "\n";
+        csv << "," << vi << "," << o->faces_label() << "," << cfg.nodes << "," << cfg.reach << "," << r.steps << "," << r.wall_seconds
+            << "," << r.induced_std << "," << r.induced_half_difference << "," << oge.induced_std << "," << oge.induced_half_difference
+            << "," << uncertainty << "\n";
         csv.flush();
         std::cout.flush();
       }
@@ -244,7 +269,7 @@ std::function<int()> add_sweep_command(CLI::App& app) {
           << r.inflow.mean.x() << "," << r.pitt_peters_mean << "," << r.pitt_peters_cosine << "," << r.momentum_theory << "," << vh << ","
           << r.induced_mean / r.pitt_peters_mean << "," << cfg.nodes << "," << cfg.reach << "," << r.cells_per_edge << ","
           << r.simulated_seconds / r.steps << "," << r.steps << "," << r.wall_seconds << "," << r.induced_std << ","
-          << r.induced_half_difference << "," << o->faces << "\n";
+          << r.induced_half_difference << "," << o->faces_label() << "\n";
       csv.flush();
     }
     csv.close();

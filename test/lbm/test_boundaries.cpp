@@ -126,3 +126,83 @@ TEST(OpenBoundaries, InletValuesPerCellAtRunTime) {
   EXPECT_NEAR(s->fields().u[3 * s->lattice().index(20, 4, 1)], 0.03f, 0.0006);
   EXPECT_THROW(s->set_boundary_values({1.0f}), ConfigError);
 }
+
+// Steady pressure of an impedance outlet (FaceCondition::pressure_relaxation). A periodic duct with a
+// velocity inlet at -x and an impedance outlet at +x carries a plug flow U0; then the inlet speeds up
+// to U1. The step sends an acoustic wave of rho' = rho (U1 - U0) / c_s down the duct (linear acoustics,
+// p' = rho c_s u'), and the outlet lets it out without reflection. Without relaxation (the thesis'
+// outlet, eq. 6.15) the duct keeps that density for good: the outlet has no reference pressure. With
+// relaxation K the density returns to the reference 1 at the rate lambda of the quasi-static balance of
+// the duct's mass (L d rho / dt = rho (u_in - u_out)) and the outlet's relation per step
+// (c_s^2 d rho - rho c_s d u = -K c_s^2 (rho - 1)): c_s L lambda^2 - c_s^2 lambda + K c_s^2 = 0.
+namespace {
+struct DuctAfterInletStep {
+  double early = 0, late = 0;  // mean density - 1 over the duct, 500 and 5500 steps after the step
+};
+DuctAfterInletStep duct_after_inlet_step(int nx, float U0, float U1, float relaxation) {
+  LatticeConfig cfg = periodic_config(nx, 3, 3, 0.01f);
+  cfg.faces[0].type = FaceType::VelocityInlet;
+  cfg.faces[0].velocity = {U0, 0, 0};
+  cfg.faces[1].type = FaceType::ImpedanceOutlet;
+  cfg.faces[1].pressure_relaxation = relaxation;
+  auto s = make_cpu_solver(Lattice(cfg));
+  std::vector<float> u(3 * s->lattice().cells(), 0.0f);
+  for (std::size_t c = 0; c < s->lattice().cells(); ++c) u[3 * c] = U0;
+  s->initialize({}, u);
+  s->step(200);
+  const auto& cells = s->lattice().boundary_cells();
+  std::vector<float> values = s->boundary_values();
+  for (std::size_t b = 0; b < cells.size(); ++b)
+    if (cells[b] % nx == 0) values[4 * b] = U1;  // the inlet; the outlet's reference stays (no reference change)
+  s->set_boundary_values(values);
+  const auto mean_excess = [&] {
+    const Fields f = s->fields();
+    double sum = 0;
+    for (float r : f.rho) sum += r - 1.0;
+    return sum / static_cast<double>(f.rho.size());
+  };
+  DuctAfterInletStep r;
+  s->step(500);
+  r.early = mean_excess();
+  s->step(5000);
+  r.late = mean_excess();
+  return r;
+}
+}  // namespace
+
+TEST(OpenBoundaries, ImpedanceOutletWithoutRelaxationKeepsTheAcousticPressureOfAStep) {
+  const float U0 = 0.05f, U1 = 0.06f;
+  const double expected = (U1 - U0) / std::sqrt(1.0 / 3.0);  // rho' = rho du / c_s
+  const DuctAfterInletStep r = duct_after_inlet_step(30, U0, U1, 0.0f);
+  RecordProperty("density_excess_expected", std::to_string(expected));
+  RecordProperty("density_excess_early", std::to_string(r.early));
+  RecordProperty("density_excess_late", std::to_string(r.late));
+  EXPECT_NEAR(r.early, expected, 0.03 * expected);
+  EXPECT_NEAR(r.late, expected, 0.03 * expected);  // no reference pressure: it stays
+}
+
+TEST(OpenBoundaries, ImpedanceOutletWithRelaxationReturnsToTheReferencePressureAtTheQuasiStaticRate) {
+  const int nx = 30;
+  const float U0 = 0.05f, U1 = 0.06f, K = 2e-4f;
+  const DuctAfterInletStep r = duct_after_inlet_step(nx, U0, U1, K);
+  const double cs = std::sqrt(1.0 / 3.0), L = nx - 1;
+  const double lambda = cs * (1.0 - std::sqrt(1.0 - 4.0 * K * L / cs)) / (2.0 * L);
+  ASSERT_GT(r.early, 0.0);
+  ASSERT_GT(r.late, 0.0);
+  const double measured = std::log(r.early / r.late) / 5000.0;
+  RecordProperty("decay_rate_measured", std::to_string(measured));
+  RecordProperty("decay_rate_quasi_static", std::to_string(lambda));
+  EXPECT_NEAR(measured, lambda, 0.05 * lambda);
+}
+
+TEST(OpenBoundaries, ImpedanceOutletRelaxationOutsideItsRangeIsRefused) {
+  LatticeConfig cfg = periodic_config(30, 3, 3, 0.01f);
+  cfg.faces[0].type = FaceType::VelocityInlet;
+  cfg.faces[1].type = FaceType::ImpedanceOutlet;
+  cfg.faces[1].pressure_relaxation = -0.1f;
+  EXPECT_THROW(Lattice{cfg}, ConfigError);
+  cfg.faces[1].pressure_relaxation = 1.0f;
+  EXPECT_THROW(Lattice{cfg}, ConfigError);
+  cfg.faces[1].pressure_relaxation = std::nanf("");
+  EXPECT_THROW(Lattice{cfg}, ConfigError);
+}

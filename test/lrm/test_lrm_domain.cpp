@@ -1,6 +1,6 @@
 // LRM domain, isolated rotor (issue 4, thesis 8.1): a uniform stream stays uniform; the inflow of a
-// uniformly loaded rotor against momentum theory (Glauert) in forward flight. Quick variants at
-// N = 32; the full sweeps run with `ship_lrm sweep inflow`.
+// uniformly loaded rotor in fast forward flight against momentum theory (Glauert) at two lattice Mach
+// numbers; the coupled trim. Quick variants at N = 32; the full sweeps run with `ship_lrm sweep inflow`.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -49,6 +49,35 @@ TEST(LrmDomain, BadInputIsRejectedBeforeAnyStep) {
   EXPECT_THROW(lrm::LrmDomain{c}, lbm::ConfigError);
   lrm::LrmDomain d(quick_config());
   EXPECT_THROW(d.set_stream(rotor::Vec3(-200, 0, 0)), lbm::ConfigError);  // beyond the lattice Mach limit
+}
+
+#include "ship_lrm/lrm/inflow_sweep.hpp"
+
+// Issue 4, acceptance 2, quick variant (N = 32, 65 m/s; the sweeps at N = 64 and finer run with `ship_lrm
+// sweep inflow --outlet-sigma`). With the partially non-reflecting outlets (lbm::FaceCondition::
+// pressure_relaxation) the mean inflow is a property of the flow, not of the lattice's time step: the
+// same grid at half the time step (lattice Mach 0.15 instead of 0.3) gives the same inflow. The thesis'
+// outlet (sigma = 0) has no reference pressure; its steady state keeps p' = rho c_s u_n', which makes the
+// faces nearly closed for the rotor's steady disturbance as the lattice Mach number falls (N = 32: 0.853
+// at Mach 0.3, 0.835 at 0.15, 0.821 at 0.075; docs/benchmarks.md). Both runs within 10 % of Glauert at
+// this half resolution (the issue's tolerance at N = 64 is 5 %).
+TEST(IsolatedRotor, WithRelaxedOutletsTheFastForwardInflowDoesNotDependOnTheLatticeMachNumber) {
+  lrm::IsolatedRotorCase c;
+  c.speed = 65;
+  c.settle = 2;
+  c.average = 1;
+  double ratio[2];
+  for (int k = 0; k < 2; ++k) {
+    auto cfg = quick_config();
+    for (int f : {0, 4, 5}) cfg.outlet_sigma[f] = 1.0;  // back, top, bottom: the impedance faces
+    cfg.reference_velocity = 65.0 * (k + 1);            // lattice Mach 0.3, then 0.15
+    const auto r = lrm::run_isolated_rotor(cfg, c);
+    ratio[k] = r.induced_mean / r.momentum_theory;
+    EXPECT_NEAR(ratio[k], 1.0, 0.10) << "lattice velocity " << cfg.reference_velocity << " m/s";
+  }
+  RecordProperty("lrm_over_glauert_mach_0_3", std::to_string(ratio[0]));
+  RecordProperty("lrm_over_glauert_mach_0_15", std::to_string(ratio[1]));
+  EXPECT_NEAR(ratio[0], ratio[1], 0.01);
 }
 
 #include "ship_lrm/flight/trim.hpp"

@@ -197,6 +197,8 @@ SHIP_LRM_HD void reconstruct_fd(float g[Q], float rho, const float u[3], const f
 // relation rho (1 + u_n) = K. Solved for rho by Newton-Raphson; returns rho. In a moving domain the
 // undisturbed flow itself changes; d(u_n) is then taken relative to it (un_prev includes the
 // reference's change), so that only the disturbance radiates and the mean flow keeps its density.
+// rho_prev: the previous density, or, for a partially non-reflecting outlet, that density moved
+// towards the reference by the relaxation (FaceCondition::pressure_relaxation).
 SHIP_LRM_HD float impedance_density(float K, float rho_prev, float un_prev) {
   const float cs = 0.57735026919f;
   float rho = rho_prev;

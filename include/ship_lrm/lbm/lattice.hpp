@@ -29,6 +29,15 @@ struct FaceCondition {
   // given with Solver::set_boundary_values (a domain inside a known outer flow, the LRM) instead of
   // extrapolating it from the interior.
   bool inflow_from_reference = false;
+  // ImpedanceOutlet: fraction K (per step, in [0, 1)) by which the outlet's density returns to the
+  // reference density 1 each step. 0 is the thesis' outlet (eq. 6.15): it admits only outgoing waves,
+  // but it has no reference pressure, so a steady state keeps whatever p' = rho c_s u_n' its history
+  // left (with u_n' the normal velocity's departure from the reference flow): for the slow, steady
+  // disturbance of a lifting rotor the face is nearly closed at a low lattice Mach number. K > 0 is
+  // the partially non-reflecting outlet of Rudy & Strikwerda (1980, J. Comput. Phys. 36, 55) and
+  // Poinsot & Lele (1992, J. Comput. Phys. 101, 104, eq. 40: K = sigma (1 - M^2) c / L): waves much
+  // faster than K still leave, and the steady pressure at the face is the reference's.
+  float pressure_relaxation = 0.0f;
 };
 
 struct LatticeConfig {

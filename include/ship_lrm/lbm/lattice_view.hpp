@@ -33,6 +33,7 @@ struct LatticeView {
   std::uint8_t face[6] = {0, 0, 0, 0, 0, 0};                   // FaceType per face
   float face_velocity[6][3] = {};                              // wall velocity of MovingWall faces
   std::uint8_t face_inflow_reference[6] = {0, 0, 0, 0, 0, 0};  // FaceCondition::inflow_from_reference
+  float face_pressure_relaxation[6] = {};                      // FaceCondition::pressure_relaxation
   const WallMotion* walls = nullptr;
   CollisionParams params;
   // Open boundary cells (thesis 6.1.3), numbered b = 0 .. nbnd-1.
@@ -399,8 +400,11 @@ SHIP_LRM_HD Macro boundary_macro(const LatticeView& v, int b, const float g[Q], 
   }
   if (t == CellType::PressureOutlet)
     m.rho = v.bnd_value[4 * b];
-  else
-    m.rho = impedance_density(K, prev.rho, sgn * prev.u[axis] + v.bnd_value[4 * b + 3]);  // + reference change
+  else {
+    // + reference change; the density target relaxed towards the reference (FaceCondition::pressure_relaxation)
+    const float relax = v.face_pressure_relaxation[v.bnd_normal[b]];
+    m.rho = impedance_density(K, prev.rho - relax * (prev.rho - 1.0f), sgn * prev.u[axis] + v.bnd_value[4 * b + 3]);
+  }
   for (int a = 0; a < 3; ++a) m.u[a] = (a == axis) ? sgn * (K / m.rho - 1.0f) : zou_he_tangential_momentum(g, axis, sgn, a) / m.rho;
   return m;
 }

@@ -39,6 +39,10 @@ struct LrmConfig {
   double reference_velocity = 30.0;  // m/s mapped to 0.3 c_s (thesis table 6.4)
   double smagorinsky = 0.05;         // thesis 6.1 (LRM domain)
   lbm::Backend backend = lbm::Backend::Auto;
+  // Impedance faces: sigma of the partially non-reflecting outlet (lbm::FaceCondition::pressure_relaxation,
+  // K = sigma (1 - Ma^2) c_s / L per step with L the domain edge in cells, Poinsot & Lele 1992); 0: the
+  // thesis' outlet without a reference pressure. Per face, in the order of `faces`.
+  std::array<double, 6> outlet_sigma = {0, 0, 0, 0, 0, 0};
   // -x (back), +x (front), -y (left), +y (right), -z (top), +z (bottom)
   std::array<lbm::FaceType, 6> faces = {lbm::FaceType::ImpedanceOutlet, lbm::FaceType::VelocityInlet,   lbm::FaceType::VelocityInlet,
                                         lbm::FaceType::VelocityInlet,   lbm::FaceType::ImpedanceOutlet, lbm::FaceType::ImpedanceOutlet};
