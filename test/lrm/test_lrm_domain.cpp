@@ -40,12 +40,39 @@ INSTANTIATE_TEST_SUITE_P(Streams, UniformStream,
                          ::testing::Values(std::array<double, 3>{-30, 0, 0}, std::array<double, 3>{-20, 6, 0},
                                            std::array<double, 3>{-10, -3, 0}));
 
+// Faces are configurable (issue 4): a pressure outlet holds the ambient density while the velocity
+// faces take the stream (the values the domain writes are a density there, not a velocity).
+TEST(LrmDomain, PressureOutletFacesKeepAUniformStreamUniform) {
+  auto c = quick_config();
+  for (int f : {0, 4, 5}) c.faces[f] = lbm::FaceType::PressureOutlet;  // back, top, bottom
+  lrm::LrmDomain d(c);
+  const rotor::Vec3 stream(-20, 4, 0);
+  d.set_stream(stream);
+  d.restart_flow();
+  d.step(500);
+  const lbm::Fields f = d.solver().fields();
+  const double scale = d.units().dx() / d.units().dt();
+  double worst = 0, worst_density = 0;
+  for (size_t k = 0; k < f.rho.size(); ++k) {
+    const rotor::Vec3 u(f.u[3 * k] * scale, f.u[3 * k + 1] * scale, f.u[3 * k + 2] * scale);
+    worst = std::max(worst, (u - stream).norm());
+    worst_density = std::max(worst_density, std::abs(f.rho[k] - 1.0));
+  }
+  EXPECT_LT(worst, 0.005 * stream.norm()) << "largest deviation " << worst << " m/s";
+  EXPECT_LT(worst_density, 1e-3);
+}
+
 TEST(LrmDomain, BadInputIsRejectedBeforeAnyStep) {
   auto c = quick_config();
   c.reach = 0.9;
   EXPECT_THROW(lrm::LrmDomain{c}, lbm::ConfigError);
   c = quick_config();
   c.nodes = 8;
+  EXPECT_THROW(lrm::LrmDomain{c}, lbm::ConfigError);
+  c = quick_config();
+  c.outlet_sigma[0] = -1.0;
+  EXPECT_THROW(lrm::LrmDomain{c}, lbm::ConfigError);
+  c.outlet_sigma[0] = std::nan("");
   EXPECT_THROW(lrm::LrmDomain{c}, lbm::ConfigError);
   lrm::LrmDomain d(quick_config());
   EXPECT_THROW(d.set_stream(rotor::Vec3(-200, 0, 0)), lbm::ConfigError);  // beyond the lattice Mach limit
