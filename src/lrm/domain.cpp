@@ -6,6 +6,7 @@
 #include <string>
 
 #include "ship_lrm/lbm/refill.hpp"
+#include "ship_lrm/rotor/vortex_cylinder.hpp"
 
 namespace ship_lrm::lrm {
 namespace {
@@ -182,7 +183,7 @@ void LrmDomain::rebuild(bool carry_flow) {
   const std::vector<float>& u = carried.u;
   const std::vector<std::uint32_t> old_boundary = solver_ ? solver_->lattice().boundary_cells() : std::vector<std::uint32_t>{};
   solver_ = lbm::make_solver(std::move(lat), cfg_.backend);
-  if (solver_->lattice().boundary_cells() != old_boundary) face_air_stale_ = true;  // walls moved through a face
+  if (solver_->lattice().boundary_cells() != old_boundary) face_air_stale_ = far_field_stale_ = true;  // walls moved through a face
   if (!disk_forces_.empty()) solver_->set_cell_forces(disk_cells_, disk_forces_);
   if (motion_set_) {
     motion_set_ = false;  // push the faces and the frame forces to the new solver
@@ -217,13 +218,15 @@ void LrmDomain::set_motion(const Motion& m) {
   for (const Vec3* v : {&m.air_velocity, &m.omega, &m.omega_dot, &m.hub_acceleration})
     if (!v->allFinite()) throw lbm::ConfigError("LRM: the domain motion is not finite");
   // with a face grid the faces do not use air_velocity (set_face_grid)
-  const bool faces_same = motion_set_ && (grid_ || m.air_velocity == motion_.air_velocity) && m.omega == motion_.omega;
+  const bool far_field_changed = update_far_field(m.air_velocity);
+  const bool faces_same =
+      motion_set_ && !far_field_changed && (grid_ || m.air_velocity == motion_.air_velocity) && m.omega == motion_.omega;
   const bool frame_same =
       motion_set_ && m.omega == motion_.omega && m.omega_dot == motion_.omega_dot && m.hub_acceleration == motion_.hub_acceleration;
   if (faces_same && frame_same) return;  // unchanged (the coupled step calls this every step)
   const double to_lattice = units_.dt() / units_.dx();
   const double cs = 1.0 / std::sqrt(3.0);
-  if (!faces_same && grid_ && solver_->feeds_from_grid()) {
+  if (!faces_same && grid_ && solver_->feeds_from_grid() && !cfg_.rotor_far_field) {
     // the field is interpolated where the faces live (one kernel); the Mach limit is checked there
     lbm::GridFeed f = grid_->feed;
     for (int d = 0; d < 3; ++d) f.omega[d] = m.omega[d];
@@ -254,7 +257,8 @@ void LrmDomain::set_motion(const Motion& m) {
 #pragma omp parallel for schedule(static) reduction(max : fastest)
     for (long k = 0; k < ncells; ++k) {
       const Vec3 r = cell_position(k);
-      const Vec3& air = grid_ ? face_air_[k] : m.air_velocity;
+      Vec3 air = grid_ ? face_air_[k] : m.air_velocity;
+      if (!far_field_.empty()) air += far_field_[k];
       Vec3 u;
       lbm::face_lattice_velocity(air.data(), m.omega.data(), r.data(), to_lattice, u.data());
       fastest = std::max(fastest, u.norm());
@@ -348,7 +352,52 @@ void LrmDomain::restart_flow() {
   solver_->initialize(std::vector<float>(n, 1.0f), u);
 }
 
+bool LrmDomain::update_far_field(const Vec3& air) {
+  if (!cfg_.rotor_far_field) return false;
+  const double thrust = rotor_thrust_;
+  const double speed = std::max(air.norm(), far_field_air_.norm());
+  const bool thrust_moved = std::abs(thrust - far_field_thrust_) > 0.02 * std::max(std::abs(thrust), std::abs(far_field_thrust_));
+  const bool air_moved = (air - far_field_air_).norm() > 0.02 * speed;
+  if (!far_field_stale_ && !thrust_moved && !air_moved) return false;
+  const auto& cells = solver_->lattice().boundary_cells();
+  far_field_.assign(cells.size(), Vec3::Zero());
+  if (thrust > 0) {
+    // the disk's cell layer lies disk_layer_ - centre_ cells below the hub
+    const Vec3 disk_centre(0, 0, (disk_layer_ - centre_) * units_.dx());
+    std::optional<rotor::VortexCylinderWake> built;
+    try {
+      built.emplace(cfg_.radius, thrust, cfg_.density, air, units_.dx());
+    } catch (const std::invalid_argument& e) {
+      throw lbm::ConfigError(std::string("LRM: the rotor's far field at the faces: ") + e.what());
+    }
+    const rotor::VortexCylinderWake& wake = *built;
+    const long n = static_cast<long>(cells.size());
+#pragma omp parallel for schedule(dynamic, 64)
+    for (long k = 0; k < n; ++k) {
+      const size_t c = cells[k];
+      const Vec3 r = position(static_cast<int>(c % edge_), static_cast<int>((c / edge_) % edge_),
+                              static_cast<int>(c / (static_cast<size_t>(edge_) * edge_)));
+      far_field_[k] = wake.velocity(r - disk_centre);
+    }
+  }
+  far_field_thrust_ = thrust;
+  far_field_air_ = air;
+  far_field_stale_ = false;
+  return true;
+}
+
 void LrmDomain::set_rotor_forces(const rotor::RotorForceHarmonics& h) {
+  rotor_thrust_ = -h.cos[0].z();  // the mean aerodynamic force on the blades, thrust along -z
+  if (motion_set_ && update_far_field(motion_.air_velocity)) {
+    motion_set_ = false;  // push the faces with the new far field
+    const Motion m = motion_;
+    try {
+      set_motion(m);
+    } catch (...) {
+      motion_set_ = true;
+      throw;
+    }
+  }
   const auto forces = disk_.cell_forces(h);  // N per cell, on the blades
   const double volume = std::pow(units_.dx(), 3);
   std::vector<float> f(3 * forces.size());

@@ -44,7 +44,7 @@ struct IsolatedRotorOptions {
   double outlet_sigma = 0.0;
   std::vector<std::string> relaxed_faces = {"back", "top", "bottom"};
   std::string backend = "auto", out, faces = "thesis";
-  bool overwrite = false, no_plot = false, planes = false;
+  bool overwrite = false, no_plot = false, planes = false, far_field = false;
 
   void add_to(CLI::App& cmd, const std::string& outputs) {
     cmd.add_option("--N", nodes, "lattice nodes per 4R")->check(CLI::Range(16, 512))->capture_default_str();
@@ -70,6 +70,9 @@ struct IsolatedRotorOptions {
     cmd.add_option("--relaxed-faces", relaxed_faces, "impedance faces that --outlet-sigma applies to")
         ->check(CLI::IsMember({"back", "front", "left", "right", "top", "bottom"}))
         ->capture_default_str();
+    cmd.add_flag("--rotor-far-field", far_field,
+                 "the faces' air includes the rotor's own induced velocity (vortex-cylinder wake of the uniformly loaded disk), "
+                 "which takes out most of the faces' interference");
     cmd.add_option("--out", out, "output directory (" + outputs + ")")->required();
     cmd.add_flag("--overwrite", overwrite, "replace existing output files");
     cmd.add_flag("--no-plot", no_plot, "write the CSV only");
@@ -79,10 +82,13 @@ struct IsolatedRotorOptions {
   }
   // The faces column of the CSVs: the set-up, and the relaxed outlets when there are any.
   std::string faces_label() const {
-    if (!(outlet_sigma > 0)) return faces;
     std::ostringstream s;
-    s << faces << ";sigma=" << outlet_sigma << ":";
-    for (size_t k = 0; k < relaxed_faces.size(); ++k) s << (k ? "/" : "") << relaxed_faces[k];
+    s << faces;
+    if (outlet_sigma > 0) {
+      s << ";sigma=" << outlet_sigma << ":";
+      for (size_t k = 0; k < relaxed_faces.size(); ++k) s << (k ? "/" : "") << relaxed_faces[k];
+    }
+    if (far_field) s << ";rotor-far-field";
     return s.str();
   }
   lrm::LrmConfig config() const {
@@ -94,6 +100,7 @@ struct IsolatedRotorOptions {
     cfg.faces = faces_named(faces);
     const std::vector<std::string> names = {"back", "front", "left", "right", "top", "bottom"};
     for (const auto& f : relaxed_faces) cfg.outlet_sigma[std::find(names.begin(), names.end(), f) - names.begin()] = outlet_sigma;
+    cfg.rotor_far_field = far_field;
     return cfg;
   }
   lrm::IsolatedRotorCase rotor_case(double speed) const {

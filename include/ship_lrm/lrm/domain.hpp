@@ -43,6 +43,13 @@ struct LrmConfig {
   // K = sigma (1 - Ma^2) c_s / L per step with L the domain edge in cells, Poinsot & Lele 1992); 0: the
   // thesis' outlet without a reference pressure. Per face, in the order of `faces`.
   std::array<double, 6> outlet_sigma = {0, 0, 0, 0, 0, 0};
+  // The faces' undisturbed air includes the rotor's own far field: the induced velocity of a uniformly
+  // loaded disk with the rotor's mean thrust (rotor/vortex_cylinder.hpp) at each face cell, added to
+  // the velocity faces' values and to the impedance faces' reference. A finite domain's faces
+  // otherwise act on the rotor like the walls of a wind tunnel (docs/design.md, "Face interference").
+  // Recomputed when the thrust changes by more than 2 % or the air by more than 2 % of its speed (about
+  // a second at N = 64 on 2 cores, so not for real time); the faces are then fed on the host.
+  bool rotor_far_field = false;
   // -x (back), +x (front), -y (left), +y (right), -z (top), +z (bottom)
   std::array<lbm::FaceType, 6> faces = {lbm::FaceType::ImpedanceOutlet, lbm::FaceType::VelocityInlet,   lbm::FaceType::VelocityInlet,
                                         lbm::FaceType::VelocityInlet,   lbm::FaceType::ImpedanceOutlet, lbm::FaceType::ImpedanceOutlet};
@@ -152,7 +159,14 @@ class LrmDomain {
   };
   std::optional<FaceGrid> grid_;
   std::vector<Vec3> face_air_;  // host path: the grid's air per boundary cell (mr axes, m/s)
-  bool face_air_stale_ = true;  // the grid or the cell list changed since face_air_ was computed
+  // LrmConfig::rotor_far_field: the rotor's induced velocity per boundary cell (m/s, mr axes), and the
+  // thrust and air it was computed for.
+  std::vector<Vec3> far_field_;
+  double far_field_thrust_ = 0, rotor_thrust_ = 0;
+  Vec3 far_field_air_ = Vec3::Zero();
+  bool far_field_stale_ = true;
+  bool update_far_field(const Vec3& air);  // true when it changed
+  bool face_air_stale_ = true;             // the grid or the cell list changed since face_air_ was computed
   bool motion_set_ = false;
   std::vector<std::shared_ptr<WallSurface>> walls_;
   std::vector<std::int16_t> owner_;  // per cell: index of the wall that holds it, or -1

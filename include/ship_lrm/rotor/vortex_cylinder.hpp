@@ -1,0 +1,42 @@
+// Induced velocity of a uniformly loaded actuator disk from linear vortex theory: the wake is an
+// oblique cylinder of vortex rings shed at the disk's edge and carried along the mean wake velocity
+// (the air relative to the disk plus the mean induced velocity), with circulation per unit length
+// gamma = 2 v, v the momentum-theory mean induced velocity (Coleman, Feingold & Stempin 1945, NACA ARR
+// L5E10; Castles & De Leeuw 1954, NACA Report 1184; Heyson & Katzoff 1957, NACA Report 1319). In hover
+// it gives v uniformly over the disk and 2 v far down the wake; in edgewise flight v at the centre and
+// Coleman's fore-aft gradient tan(chi / 2) (chi the wake skew from the shaft). The LRM uses it as the
+// rotor's own far field at its faces (LrmConfig::rotor_far_field).
+#pragma once
+
+#include "ship_lrm/rotor/inflow_model.hpp"
+
+namespace ship_lrm::rotor {
+
+// Velocity induced at p (relative to the ring's centre) by a circular vortex ring of radius R in the
+// x-y plane, circulation gamma about +z (positive: flow along +z through the ring); closed form with
+// complete elliptic integrals (e.g. Yoon & Heister 2004, Int. J. Numer. Meth. Fluids 44, 665, eq. 6 -
+// 7). core2: a squared core radius added to the distance from the ring, which keeps the field finite
+// on the ring itself.
+Vec3 vortex_ring_velocity(double radius, double gamma, const Vec3& p, double core2);
+
+class VortexCylinderWake {
+ public:
+  // Disk of radius R at the origin in the x-y plane of the mr frame (z down); thrust T > 0 along -z
+  // (the induced flow goes along +z); air: the air's velocity relative to the disk (m/s). The wake is
+  // cut at `length` (in radii) and discretised in rings `spacing` radii apart; core: the core radius
+  // in m (at least the spacing). Throws std::invalid_argument for bad input, or when momentum theory
+  // finds no induced velocity or a wake that stays at the disk (the vortex-ring state of a descent).
+  VortexCylinderWake(double radius, double thrust, double density, const Vec3& air, double core, double spacing = 0.1,
+                     double length = 40.0);
+
+  double mean_induced() const { return v_; }         // v, m/s along +z
+  const Vec3& wake_direction() const { return d_; }  // unit vector of the wake's axis
+  Vec3 velocity(const Vec3& p) const;                // induced velocity at p (mr frame, from the hub), m/s
+
+ private:
+  double radius_, v_, ds_, core2_;
+  int rings_;
+  Vec3 d_;
+};
+
+}  // namespace ship_lrm::rotor
