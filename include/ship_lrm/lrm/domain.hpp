@@ -48,7 +48,7 @@ struct LrmConfig {
   // the velocity faces' values and to the impedance faces' reference. A finite domain's faces
   // otherwise act on the rotor like the walls of a wind tunnel (docs/design.md, "Face interference").
   // Recomputed when the thrust changes by more than 2 % or the air by more than 2 % of its speed (about
-  // a second at N = 64 on 2 cores, so not for real time); the faces are then fed on the host.
+  // 3 s at N = 64 on 2 cores, so not for real time); the faces are then fed on the host.
   bool rotor_far_field = false;
   // -x (back), +x (front), -y (left), +y (right), -z (top), +z (bottom)
   std::array<lbm::FaceType, 6> faces = {lbm::FaceType::ImpedanceOutlet, lbm::FaceType::VelocityInlet,   lbm::FaceType::VelocityInlet,
