@@ -37,7 +37,7 @@ lbm::Lattice make_lattice(const LrmConfig& c, const lbm::UnitConverter& u, int e
   for (int f = 0; f < 6; ++f) {
     lc.faces[f].type = c.faces[f];
     lc.faces[f].inflow_from_reference = true;  // the faces know the undisturbed air (set_motion)
-    // Poinsot & Lele (1992) eq. 40 in lattice units (c_s per step, L = the edge in cells); the stream's
+    // Poinsot & Lele's (1992) K = sigma (1 - M^2) c / L in lattice units (c_s per step, L = the edge in cells); the stream's
     // Mach number is that of the reference velocity (0.3 c_s) at most
     const double mach = 0.3;
     if (c.faces[f] == lbm::FaceType::ImpedanceOutlet)

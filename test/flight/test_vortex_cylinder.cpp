@@ -1,5 +1,5 @@
 // The vortex-cylinder wake of a uniformly loaded disk (rotor/vortex_cylinder.hpp) against the closed
-// forms of vortex theory: a ring's field on its axis (Lamb 1932, art. 161), the semi-infinite
+// forms of vortex theory: a ring's field on its axis (Lamb, Hydrodynamics), the semi-infinite
 // cylinder's uniform v on the disk and 2 v far down the wake (momentum theory's hover), and in
 // edgewise flight Coleman, Feingold & Stempin's (1945) centre value v and fore-aft gradient
 // dv/dx = tan(chi / 2) v / R at the centre.

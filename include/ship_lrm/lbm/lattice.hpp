@@ -35,7 +35,7 @@ struct FaceCondition {
   // left (with u_n' the normal velocity's departure from the reference flow): for the slow, steady
   // disturbance of a lifting rotor the face is nearly closed at a low lattice Mach number. K > 0 is
   // the partially non-reflecting outlet of Rudy & Strikwerda (1980, J. Comput. Phys. 36, 55) and
-  // Poinsot & Lele (1992, J. Comput. Phys. 101, 104, eq. 40: K = sigma (1 - M^2) c / L): waves much
+  // Poinsot & Lele (1992, J. Comput. Phys. 101, 104: K = sigma (1 - M^2) c / L): waves much
   // faster than K still leave, and the steady pressure at the face is the reference's.
   float pressure_relaxation = 0.0f;
 };

@@ -14,9 +14,9 @@ namespace ship_lrm::rotor {
 
 // Velocity induced at p (relative to the ring's centre) by a circular vortex ring of radius R in the
 // x-y plane, circulation gamma about +z (positive: flow along +z through the ring); closed form with
-// complete elliptic integrals (e.g. Yoon & Heister 2004, Int. J. Numer. Meth. Fluids 44, 665, eq. 6 -
-// 7). core2: a squared core radius added to the distance from the ring, which keeps the field finite
-// on the ring itself.
+// complete elliptic integrals (e.g. Yoon & Heister 2004, Int. J. Numer. Meth. Fluids 44, 665). core2: a
+// squared core radius added to the distance from the ring, which keeps the field finite on the ring
+// itself.
 Vec3 vortex_ring_velocity(double radius, double gamma, const Vec3& p, double core2);
 
 class VortexCylinderWake {
