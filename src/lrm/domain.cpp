@@ -38,8 +38,8 @@ lbm::Lattice make_lattice(const LrmConfig& c, const lbm::UnitConverter& u, int e
     lc.faces[f].type = c.faces[f];
     lc.faces[f].inflow_from_reference = true;  // the faces know the undisturbed air (set_motion)
     // Poinsot & Lele's (1992) K = sigma (1 - M^2) c / L in lattice units (c_s per step, L = the edge in cells); the stream's
-    // Mach number is that of the reference velocity (0.3 c_s) at most
-    const double mach = 0.3;
+    // Mach number is that of the reference velocity at most
+    const double mach = u.mach_number();
     if (c.faces[f] == lbm::FaceType::ImpedanceOutlet)
       lc.faces[f].pressure_relaxation = static_cast<float>(c.outlet_sigma[f] * (1.0 - mach * mach) / std::sqrt(3.0) / (edge - 1));
   }
@@ -208,6 +208,11 @@ void LrmDomain::rebuild(bool carry_flow) {
 
 Vec3 LrmDomain::position(int i, int j, int k) const { return Vec3(i - centre_, j - centre_, k - centre_) * units_.dx(); }
 
+Vec3 LrmDomain::position(std::size_t cell) const {
+  return position(static_cast<int>(cell % edge_), static_cast<int>((cell / edge_) % edge_),
+                  static_cast<int>(cell / (static_cast<std::size_t>(edge_) * edge_)));
+}
+
 void LrmDomain::set_stream(const Vec3& air) {
   Motion m;
   m.air_velocity = air;
@@ -237,11 +242,7 @@ void LrmDomain::set_motion(const Motion& m) {
   } else if (!faces_same) {
     const auto& cells = solver_->lattice().boundary_cells();
     const long ncells = static_cast<long>(cells.size());
-    const auto cell_position = [&](long k) {
-      const size_t c = cells[k];
-      return position(static_cast<int>(c % edge_), static_cast<int>((c / edge_) % edge_),
-                      static_cast<int>(c / (static_cast<size_t>(edge_) * edge_)));
-    };
+    const auto cell_position = [&](long k) { return position(cells[k]); };
     if (grid_ && face_air_stale_) {  // the grid's air at each face cell (grid_feed.hpp, as the CUDA kernel)
       face_air_.resize(cells.size());
 #pragma omp parallel for schedule(static)
@@ -374,10 +375,7 @@ bool LrmDomain::update_far_field(const Vec3& air) {
     const long n = static_cast<long>(cells.size());
 #pragma omp parallel for schedule(dynamic, 64)
     for (long k = 0; k < n; ++k) {
-      const size_t c = cells[k];
-      const Vec3 r = position(static_cast<int>(c % edge_), static_cast<int>((c / edge_) % edge_),
-                              static_cast<int>(c / (static_cast<size_t>(edge_) * edge_)));
-      far_field_[k] = wake.velocity(r - disk_centre);
+      far_field_[k] = wake.velocity(position(cells[k]) - disk_centre);
     }
   }
   far_field_thrust_ = thrust;

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "ship_lrm/rotor/momentum_theory.hpp"
+
 namespace ship_lrm::rotor {
 
 Vec3 vortex_ring_velocity(double radius, double gamma, const Vec3& p, double core2) {
@@ -21,37 +23,18 @@ Vec3 vortex_ring_velocity(double radius, double gamma, const Vec3& p, double cor
   return Vec3(ur * p.x() / rho, ur * p.y() / rho, uz);
 }
 
-namespace {
-// Momentum theory with the wake carried by air + v e_z: v |air + v e_z| = v_h^2 (Glauert); Newton from
-// the larger of v_h and the edgewise estimate.
-double momentum_induced(double thrust, double density, double radius, const Vec3& air) {
-  const double vh2 = thrust / (2.0 * density * M_PI * radius * radius);
-  const double inplane2 = air.x() * air.x() + air.y() * air.y();
-  double v = std::max(std::sqrt(vh2), vh2 / std::sqrt(inplane2 + 1e-300));
-  v = std::min(v, std::sqrt(vh2) * 1e3);
-  for (int i = 0; i < 100; ++i) {
-    const double w = air.z() + v, s = std::sqrt(inplane2 + w * w);
-    const double f = v * s - vh2, df = s + v * w / s;
-    if (!(df > 0)) break;
-    const double dv = f / df;
-    v -= dv;
-    if (std::abs(dv) < 1e-12 * (1.0 + std::abs(v))) {
-      if (v > 0) return v;
-      break;
-    }
-  }
-  throw std::invalid_argument("vortex-cylinder wake: momentum theory found no induced velocity for this descent (vortex-ring state)");
-}
-}  // namespace
-
 VortexCylinderWake::VortexCylinderWake(double radius, double thrust, double density, const Vec3& air, double core, double spacing,
                                        double length)
     : radius_(radius) {
   if (!(radius > 0) || !(thrust > 0) || !(density > 0) || !air.allFinite() || !(core >= 0) || !(spacing > 0) || !(length > spacing))
     throw std::invalid_argument("vortex-cylinder wake: needs radius, thrust, density, spacing > 0, core >= 0, a finite air velocity");
-  v_ = momentum_induced(thrust, density, radius, air);
+  try {
+    v_ = momentum_induced_velocity(thrust, density, radius, std::hypot(air.x(), air.y()), air.z());
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("vortex-cylinder wake: ") + e.what());
+  }
   const Vec3 wake = air + Vec3(0, 0, v_);
-  if (!(wake.norm() > 1e-6 * std::sqrt(thrust / (2.0 * density * M_PI * radius * radius))))
+  if (!(wake.norm() > 1e-6 * hover_induced_velocity(thrust, density, radius)))
     throw std::invalid_argument("vortex-cylinder wake: the wake does not move away from the disk (vortex-ring state)");
   d_ = wake / wake.norm();
   ds_ = spacing * radius;

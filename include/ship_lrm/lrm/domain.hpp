@@ -110,6 +110,7 @@ class LrmDomain {
   bool has_face_grid() const { return grid_.has_value(); }
   // Position of a cell centre relative to the hub (m, mr axes).
   Vec3 position(int i, int j, int k) const;
+  Vec3 position(std::size_t cell) const;  // the same for a lattice index (x fastest)
   // Restart the flow: every cell at rest density with the current motion's air velocity (no wake).
   // An impulsive start from rest instead sends a compression wave through the domain that the
   // non-reflecting outlets let out without restoring the density (no reference pressure).
