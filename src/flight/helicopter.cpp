@@ -58,7 +58,7 @@ void Helicopter::set_blade_angles(const BladeAngles& a) {
   other_valid_ = false;
 }
 
-rotor::RotorDiskState Helicopter::disk_state() const {
+rotor::RotorDiskState Helicopter::disk_motion() const {
   rotor::RotorDiskState d;
   d.time = time_;
   d.radius = p_.main_rotor.radius;
@@ -67,6 +67,15 @@ rotor::RotorDiskState Helicopter::disk_state() const {
   const Vec3 hub_body = air_velocity_body(body_) + body_.rate.cross(p_.main_rotor.hub_position);
   d.hub_velocity = mr_to_body_.transpose() * hub_body;
   d.body_rate = mr_to_body_.transpose() * body_.rate;
+  const Eigen::Matrix3d body_to_world = body_.attitude.toRotationMatrix();
+  d.hub_position = body_.position + body_to_world * p_.main_rotor.hub_position;
+  d.mr_to_world = body_to_world * mr_to_body_;
+  d.hub_world_velocity = body_to_world * (body_.velocity + body_.rate.cross(p_.main_rotor.hub_position));
+  return d;
+}
+
+rotor::RotorDiskState Helicopter::disk_state() const {
+  rotor::RotorDiskState d = disk_motion();
   d.aero_force = out_.rotor.aero_force;
   d.aero_moment = out_.rotor.aero_moment;
   if (inflow_->needs_harmonics()) d.harmonics = rotor_.force_record().harmonics();

@@ -87,6 +87,18 @@ class Reader {
     }
   }
 
+  // Whether the (dotted) field is there, for optional sections.
+  bool has(const std::string& dotted) const {
+    YAML::Node n = YAML::Clone(root_);
+    std::stringstream ss(dotted);
+    std::string part;
+    while (std::getline(ss, part, '.')) {
+      if (!n.IsMap() || !n[part]) return false;
+      n = n[part];
+    }
+    return true;
+  }
+
   const std::string& path() const { return path_; }
 
  private:
@@ -189,6 +201,18 @@ HelicopterParameters load_helicopter_parameters(const std::string& path) {
   c.tail_min = tail[0] * kDeg;
   c.tail_max = tail[1] * kDeg;
   if (c.tail_max <= c.tail_min) throw ParameterError(path + ": field 'controls.tail_rotor_pitch' must be [low, high]");
+
+  if (r.has("landing_gear")) {
+    // skids: two runners `skid_track` apart, from `skid_rear` to `skid_front` (x from the cg), at
+    // `skid_depth` below the cg; their four ends are the contact points
+    const double front = r.number("landing_gear.skid_front", -20.0, 20.0);
+    const double rear = r.number("landing_gear.skid_rear", -20.0, 20.0);
+    if (rear >= front) throw ParameterError(path + ": field 'landing_gear.skid_rear' must lie aft of 'landing_gear.skid_front'");
+    const double half_track = 0.5 * r.number("landing_gear.skid_track", 0.0, 20.0);
+    const double depth = r.number("landing_gear.skid_depth", 0.0, 20.0);
+    for (double x : {front, rear})
+      for (double y : {-half_track, half_track}) p.landing_gear.contact_points.emplace_back(x, y, depth);
+  }
 
   p.time_step = r.number("simulation.time_step", 1e-5, 0.05);
   const double sub = r.number("simulation.blade_substeps", 1, 64);

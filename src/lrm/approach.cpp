@@ -37,9 +37,10 @@ ShipApproach::ShipApproach(const ApproachConfig& cfg, const flight::HelicopterPa
       if (realtime) fluid_->set_catch_up_limit(kRealTimeCatchUpSteps);
       link = std::make_shared<DirectLink>(fluid_);
     }
-    auto model = std::make_unique<LinkedInflow>(std::move(link), [this](double t, DomainPose& pose, double& table_t) {
-      pose = domain_pose(t);
-      table_t = table_time(t);
+    // (in real time this runs in the LRM thread: it reads only the posted state and the set-up)
+    auto model = std::make_unique<LinkedInflow>(std::move(link), [this](const rotor::RotorDiskState& s, DomainPose& pose, double& table_t) {
+      pose = cfg_.free_flight ? domain_pose(s) : domain_pose(s.time);
+      table_t = table_time(s.time);
     });
     linked_ = model.get();
     inflow = std::move(model);
@@ -54,8 +55,13 @@ ShipApproach::ShipApproach(const ApproachConfig& cfg, const flight::HelicopterPa
   heli_ = std::make_unique<flight::Helicopter>(params, std::move(inflow));
   heli_->set_controls(trim_.controls);
   heli_->set_wind(wind);
-  heli_->set_body_held(true);  // moved along the path (a whirl tower with a fuselage, thesis 9.1)
-  place(0.0, true);
+  // held: moved along the path (a whirl tower with a fuselage, thesis 9.1); free flight: held during
+  // the start-up too (the blades and the LRM's wake settle), then flown from there
+  heli_->set_body_held(!released());
+  place(0.0, true, true);
+  check_contact();
+  if (!end_reason_.empty())
+    throw lbm::ConfigError("approach: the start puts the landing gear into the ship or the sea (" + end_reason_ + ")");
   record();
 }
 
@@ -69,8 +75,18 @@ DomainPose ShipApproach::domain_pose(double t) const {
   return pose;
 }
 
-void ShipApproach::place(double t, bool start) {
-  const DomainPose pose = domain_pose(t);
+DomainPose ShipApproach::domain_pose(const rotor::RotorDiskState& s) const {
+  DomainPose pose;
+  pose.hub = s.hub_position;
+  pose.rotation = s.mr_to_world;
+  pose.hub_velocity = s.hub_world_velocity;
+  pose.omega = s.body_rate;
+  return pose;
+}
+
+void ShipApproach::place(double t, bool start, bool on_path) {
+  const bool flown = !start && !on_path;  // the helicopter is where it flew to
+  const DomainPose pose = flown ? domain_pose(heli_->disk_motion()) : domain_pose(t);
   flight::RigidBodyState body;
   body.position = pose.hub - attitude_ * heli_->parameters().main_rotor.hub_position;
   body.attitude = attitude_;
@@ -86,19 +102,51 @@ void ShipApproach::place(double t, bool start) {
   }
   if (start)
     heli_->reset(body);
-  else
+  else if (!flown)
     heli_->set_body(body);
 }
 
 void ShipApproach::step() {
   const auto start = std::chrono::steady_clock::now();
+  const bool held = !released();
+  heli_->set_body_held(held);
   heli_->step();
-  place(heli_->time(), false);
+  place(heli_->time(), false, held);
+  check_contact();
   wall_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   record();
 }
 
-bool ShipApproach::done() const { return heli_->time() >= cfg_.duration - 0.5 * heli_->time_step(); }
+bool ShipApproach::released() const { return cfg_.free_flight && heli_->time() >= cfg_.startup - 0.5 * heli_->time_step(); }
+
+bool ShipApproach::done() const { return !end_reason_.empty() || heli_->time() >= cfg_.duration - 0.5 * heli_->time_step(); }
+
+void ShipApproach::check_contact() {
+  if (!cfg_.free_flight || !end_reason_.empty()) return;
+  const flight::RigidBodyState& b = heli_->body();
+  const double t = heli_->time();
+  const wake::ShipPlacement ship = ship_placement(t);
+  const double tt = table_time(t);
+  for (const Vec3& point : heli_->parameters().landing_gear.contact_points) {
+    const Vec3 x = b.position + b.attitude * point;  // mean frame (NED)
+    const bool on_ship = ship_.geometry->signed_distance(ship.to_body(x)) <= 0;
+    if (!on_ship && x.z() < ship_.geometry->datum().waterline) continue;
+    // the point's velocity relative to the surface it touched (the sea is at rest in the mean frame)
+    Vec3 surface = Vec3::Zero();
+    if (on_ship) {
+      const Vec3 centre = ship.to_mean(ship.centre);
+      surface = ship_.motion->centre_velocity(tt) + ship_.motion->omega(tt).cross(x - centre);
+    }
+    const Vec3 v = b.attitude * (b.velocity + b.rate.cross(point)) - surface;
+    std::ostringstream m;
+    m.precision(3);
+    m << std::fixed << (on_ship ? "touched the ship" : "hit the sea") << " at t = " << t << " s, " << ship_.spot.x() - b.position.x()
+      << " m behind the landing spot, sinking at " << v.z() << " m/s and moving at " << Vec3(v.x(), v.y(), 0).norm()
+      << " m/s horizontally relative to it";
+    end_reason_ = m.str();
+    return;
+  }
+}
 
 void ShipApproach::record() {
   const double t = heli_->time();
@@ -107,8 +155,13 @@ void ShipApproach::record() {
   ApproachSample& s = sample_;
   s.time = t;
   s.cg = heli_->body().position;
-  s.distance = cfg_.path.distance_at(t);
-  s.speed = cfg_.path.speed_at(t);
+  if (released()) {
+    s.distance = ship_.spot.x() - s.cg.x();
+    s.speed = (heli_->body().attitude * heli_->body().velocity).x();
+  } else {
+    s.distance = cfg_.path.distance_at(t);
+    s.speed = cfg_.path.speed_at(t);
+  }
   const wake::ShipPlacement place = ship_placement(t);
   s.height_above_deck = ship_.spot.z() - place.to_body(s.cg).z();  // z down: the deck at the spot's level
   const wake::ShipPose ship = ship_.motion->pose(table_time(t));

@@ -11,7 +11,7 @@ LinkedInflow::LinkedInflow(std::shared_ptr<InflowLink> link, Placement placement
 void LinkedInflow::exchange(InflowRequest& request) {
   if (!lost_) {
     request.sequence = sequence_++;
-    placement_(request.state.time, request.pose, request.table_time);
+    placement_(request.state, request.pose, request.table_time);
     try {
       served_ = link_->exchange(request);
       return;

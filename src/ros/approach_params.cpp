@@ -72,6 +72,7 @@ lrm::ApproachConfig approach_config(const ros::NodeHandle& nh) {
   read(nh, "ship_walls", c.ship_walls);
   read(nh, "fuselage", c.fuselage);
   read(nh, "wake", c.wake);
+  read(nh, "free_flight", c.free_flight);
   read_number(nh, "path/start_distance", c.path.start_distance);
   read_number(nh, "path/height", c.path.height);
   read_number(nh, "path/lateral", c.path.lateral);

@@ -10,6 +10,9 @@
 // step on; the loads of that step are published at once (besides the output_interval grid) and carry
 // the input's stamp (pilot_stamp), so the input-to-loads latency can be measured. The trim's controls
 // go out latched on pilot/trim (the Scenario nodelet centres the stick on them).
+// Free flight (approach/free_flight, fly.launch): the airframe flies from the trimmed start instead of
+// following the path; a run that ends where the skids touch the ship or the sea says so (WARN).
+// Service `trim` (ship_lrm/Trim): the Pitt-Peters trim of this helicopter for a speed and climb angle.
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/WrenchStamped.h>
 #include <nav_msgs/Odometry.h>
@@ -29,7 +32,9 @@
 
 #include "ship_lrm/PilotControls.h"
 #include "ship_lrm/RotorLoads.h"
+#include "ship_lrm/Trim.h"
 #include "ship_lrm/flight/parameters.hpp"
+#include "ship_lrm/flight/trim.hpp"
 #include "ship_lrm/lrm/approach.hpp"
 #include "ship_lrm/lrm/wall_clock_pacer.hpp"
 #include "ship_lrm/ros/approach_params.hpp"
@@ -87,6 +92,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
     epoch_pub_ = nh.advertise<std_msgs::Time>(kEpochTopic, 1, true);
     trim_pub_ = nh.advertise<ship_lrm::PilotControls>("pilot/trim", 1, true);
     pilot_ = nh.subscribe("pilot/controls", 4, &FlightModelNodelet::on_pilot, this, ros::TransportHints().tcpNoDelay());
+    trim_service_ = nh.advertiseService("trim", &FlightModelNodelet::on_trim, this);
     diagnostics_.setHardwareID("ship_lrm flight model");
     diagnostics_.add("flight model", this, &FlightModelNodelet::diagnose);
     if (cfg_.inflow == "lrm") link_ = std::make_shared<RosInflowLink>(nh, lrm_timeout_);
@@ -115,6 +121,39 @@ class FlightModelNodelet : public nodelet::Nodelet {
     pilot_controls_ = c;
     pilot_msg_stamp_ = m->header.stamp;
     pilot_new_ = true;
+  }
+
+  // A steady flight's Pitt-Peters trim (core: flight::trim); a bad request or a trim that does not
+  // converge answers converged = false with the reason, never an exception into ROS.
+  bool on_trim(ship_lrm::Trim::Request& req, ship_lrm::Trim::Response& res) {
+    res.converged = false;
+    if (!std::isfinite(req.speed) || req.speed < 0 || req.speed > 100) {
+      res.message = "speed must lie in [0, 100] m/s, got " + std::to_string(req.speed);
+      return true;
+    }
+    if (!std::isfinite(req.climb_angle) || std::abs(req.climb_angle) > 0.5 * M_PI) {
+      res.message = "climb_angle must lie in [-pi/2, pi/2] rad, got " + std::to_string(req.climb_angle);
+      return true;
+    }
+    try {
+      flight::Helicopter heli(params_);  // Pitt-Peters
+      flight::TrimTarget target;
+      target.speed = req.speed;
+      target.climb_angle = req.climb_angle;
+      const flight::TrimResult t = flight::trim(heli, target);
+      res.converged = t.converged;
+      res.message = t.message;
+      res.collective = t.controls.collective;
+      res.longitudinal = t.controls.longitudinal;
+      res.lateral = t.controls.lateral;
+      res.pedal = t.controls.pedal;
+      res.pitch = t.pitch;
+      res.roll = t.roll;
+      res.main_power = t.main_power;
+    } catch (const std::exception& e) {
+      res.message = std::string("trim failed: ") + e.what();
+    }
+    return true;
   }
 
   // the newest pilot input, if one came since the last step (applied before the next)
@@ -178,6 +217,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
         overruns_ = pacer.overruns();
       }
     }
+    if (approach_ && !approach_->end_reason().empty()) NODELET_WARN("FlightModel: free flight %s", approach_->end_reason().c_str());
     if (approach_ && approach_->done()) {
       NODELET_INFO("FlightModel: approach finished at t = %.3f s (%ld steps, t_clock/t_sim %.2f)", approach_->time(), steps_,
                    approach_->wall_seconds() / std::max(approach_->time(), 1e-9));
@@ -401,6 +441,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
   std::unique_ptr<lrm::ShipApproach> approach_;
   ros::Publisher clock_, loads_, wrench_, odom_, status_, epoch_pub_, trim_pub_, markers_;
   ros::Subscriber pilot_;
+  ros::ServiceServer trim_service_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
   diagnostic_updater::Updater diagnostics_;

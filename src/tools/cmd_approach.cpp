@@ -73,6 +73,9 @@ std::function<int()> add_approach_command(CLI::App& app) {
   cmd->add_flag("--realtime", o->realtime,
                 "lrm: pace to the wall clock; the LRM runs in its own thread and a step whose inflow misses its deadline "
                 "flies on Pitt-Peters (counted; not deterministic)");
+  cmd->add_flag("--free-flight", o->cfg.free_flight,
+                "the airframe flies freely (6-DOF) from the path's start, trimmed, with the trim's controls fixed (no pilot): "
+                "the open-loop response; ends where the skids touch the ship or the sea");
   cmd->add_flag("--pipelined", o->pipelined, "with --realtime: the LRM two LBM intervals behind the flight model (more time per LBM step)");
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
@@ -136,6 +139,7 @@ std::function<int()> add_approach_command(CLI::App& app) {
       }
     }
     csv.close();
+    if (!run.end_reason().empty()) std::cout << "approach: free flight " << run.end_reason() << "\n";
     std::cout << "wrote " << (dir / "approach.csv").string() << " (" << run.sample().time << " s simulated, " << run.wall_seconds()
               << " s in the coupled step: t_clock/t_sim " << run.wall_seconds() / run.sample().time << ")\n";
     if (const auto* rt = run.realtime_inflow()) {
@@ -145,7 +149,10 @@ std::function<int()> add_approach_command(CLI::App& app) {
                 << pacer.overruns() << " steps ended after their due time; the LRM dropped " << run.dropped_lrm_steps()
                 << " LBM steps to catch up\n";
     }
-    if (!o->no_plot) {
+    if (!o->no_plot && run.sample().time <= cfg.startup) {
+      std::cout << "approach: no plots: the run ended before the start-up period (" << cfg.startup
+                << " s) was over, so there is no Delta to take\n";
+    } else if (!o->no_plot) {
       if (!run_script("analyze_approach.py",
                       "'" + (dir / "approach.csv").string() + "' --out '" + dir.string() + "' --startup " + std::to_string(cfg.startup)))
         std::cerr << "ship_lrm: warning: the analysis failed (needs python3 with numpy, matplotlib and pywt); the CSV is complete\n";

@@ -109,3 +109,15 @@ TEST(AirfoilTable, Naca23012FollowsPublishedCharacteristics) {
   // drag rise above the drag-divergence Mach number
   EXPECT_GT(t.lookup(2 * deg, 0.9).cd, 5 * t.lookup(2 * deg, 0.5).cd);
 }
+
+// The landing gear is optional (a file without it flies, no contact is detected); where given, its
+// four skid ends are the contact points, and a rear end ahead of the front one is refused by name.
+TEST(Parameters, LandingGearIsOptionalAndChecked) {
+  const auto p = load_default_bo105();
+  ASSERT_EQ(p.landing_gear.contact_points.size(), 4u);
+  for (const auto& c : p.landing_gear.contact_points) EXPECT_DOUBLE_EQ(c.z(), 1.2);  // below the cg (FRD)
+  const auto without = load_helicopter_parameters(edited_copy("nogear", "landing_gear:(\\n[ #][^\\n]*)*\\n", ""));
+  EXPECT_TRUE(without.landing_gear.contact_points.empty());
+  const std::string msg = error_of(edited_copy("gear", "skid_rear: -1.4", "skid_rear: 2.0"));
+  EXPECT_NE(msg.find("landing_gear.skid_rear"), std::string::npos) << msg;
+}

@@ -35,7 +35,8 @@ class FailingLink final : public lrm::InflowLink {
 TEST(InflowLink, RequestsCarryThePlacementAndAnswersAreServedUntilTheLinkIsLost) {
   const double dt = 0.01;
   auto link = std::make_shared<FailingLink>(4);  // the reset and 3 advances
-  lrm::LinkedInflow linked(link, [](double t, lrm::DomainPose& pose, double& table_t) {
+  lrm::LinkedInflow linked(link, [](const rotor::RotorDiskState& s, lrm::DomainPose& pose, double& table_t) {
+    const double t = s.time;
     pose.hub = Vec3(100 * t, 0, -8);
     table_t = 3.0 + t;
   });

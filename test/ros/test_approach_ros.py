@@ -1,7 +1,10 @@
 #!/usr/bin/python3
-"""Issue 6 acceptance 1 and 2 (rostest, launched by approach.test): the approach in simulated time on
-a tiny table publishes its topics and every tf frame; its loads are finite and identical, sample by
-sample, to those of the ROS-free batch tool `ship_lrm approach` for the same configuration."""
+"""Issue 6 acceptance 1 and 2 (rostest, launched by approach.test, and by free_flight.test with
+~free_flight true): the approach in simulated time on a tiny table publishes its topics and every tf
+frame; its loads are finite and identical, sample by sample, to those of the ROS-free batch tool
+`ship_lrm approach` for the same configuration (held on the path, or flying freely after the start-up:
+then the LRM domain's pose travels in every request, and the helicopter leaves the path). The `trim`
+service answers with the trim the flight model published on pilot/trim, and refuses a bad request."""
 import csv
 import math
 import os
@@ -19,7 +22,8 @@ from geometry_msgs.msg import TwistStamped
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import PointCloud2
 
-from ship_lrm.msg import RotorLoads, WakeInfo
+from ship_lrm.msg import PilotControls, RotorLoads, WakeInfo
+from ship_lrm.srv import Trim
 
 DURATION = 1.0
 FRAMES = ["world", "world_ned", "base_link", "base_link_frd", "main_rotor", "lrm_domain", "ship", "ship_frd"]
@@ -63,9 +67,11 @@ class ApproachLaunch(unittest.TestCase):
         exe = roslib.packages.find_node("ship_lrm", "ship_lrm")
         self.assertTrue(exe, "the ship_lrm program is not in the catkin workspace")
         out = tempfile.mkdtemp(prefix="ship_lrm_rostest_")
+        free_flight = rospy.get_param("~free_flight", False)
         subprocess.check_call([exe[0], "approach", "--wake", rospy.get_param("~wake_file"), "--backend", "cpu", "--N", "16",
                                "--duration", str(DURATION), "--startup", "0.1", "--start-distance", "10", "--height", "5",
-                               "--output-interval", "0.01", "--no-plot", "--out", out], stdout=subprocess.DEVNULL)
+                               "--output-interval", "0.01", "--no-plot", "--out", out] + (["--free-flight"] if free_flight else []),
+                              stdout=subprocess.DEVNULL)
         with open(os.path.join(out, "approach.csv")) as f:
             rows = list(csv.DictReader(f))
         batch = {round(float(r["time_s"]), 6): r for r in rows}
@@ -79,6 +85,27 @@ class ApproachLaunch(unittest.TestCase):
             self.assertEqual(m.cmy, float(r["CMy"]), "C_My differs at t = %g" % m.time)
             compared += 1
         self.assertEqual(compared, len(loads), "the ROS and batch sample times do not match")
+        # held: on the path, 5 m above the deck; free: it has left the path (the Pitt-Peters trim's
+        # controls do not trim the LRM's inflow exactly), the same way in both
+        end = batch[round(loads[-1].time, 6)]
+        self.assertAlmostEqual(loads[-1].height_above_deck, float(end["height_above_deck_m"]), places=9)
+        if free_flight:
+            self.assertGreater(abs(loads[-1].height_above_deck - 5.0), 0.02)
+        else:
+            self.assertAlmostEqual(loads[-1].height_above_deck, 5.0, places=6)
+
+    def test_trim_service(self):
+        published = rospy.wait_for_message("/pilot/trim", PilotControls, timeout=120)
+        rospy.wait_for_service("/trim", timeout=60)
+        trim = rospy.ServiceProxy("/trim", Trim)
+        answer = trim(speed=25.58, climb_angle=0.0)  # the approach's trim (20.58 m/s wind + 5 m/s)
+        self.assertTrue(answer.converged, answer.message)
+        self.assertAlmostEqual(answer.collective, published.collective, delta=1e-4)  # % (the table stores the wind in float)
+        self.assertAlmostEqual(answer.longitudinal, published.longitudinal, delta=1e-4)
+        self.assertGreater(answer.main_power, 0)
+        bad = trim(speed=-1.0, climb_angle=0.0)
+        self.assertFalse(bad.converged)
+        self.assertIn("speed", bad.message)
 
 
 if __name__ == "__main__":

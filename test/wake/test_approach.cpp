@@ -7,47 +7,15 @@
 #include "ship_lrm/lrm/approach.hpp"
 #include "ship_lrm/lrm/approach_fluid.hpp"
 #include "ship_lrm/wake/wake_precompute.hpp"
-#include "temp_path.hpp"
+#include "tiny_approach.hpp"
 
 using namespace ship_lrm;
 
 namespace {
-// The tiny preset (full-scale NatoGD at rest, 20.58 m/s, 2 s of frames), made once per test run.
-const std::string& tiny_table() {
-  static const std::string path = [] {
-    wake::PrecomputeOptions o = wake::preset("tiny");
-    o.out = test::temp_path("ship_lrm_test_approach", "tiny.h5");
-    o.domain.backend = lbm::Backend::Cpu;
-    wake::precompute_wake(o);
-    return o.out;
-  }();
-  return path;
-}
+using test::RecordingLink;
+using test::tiny_table;
 
-// Forwards every request to a fluid side in this process and keeps them.
-class RecordingLink final : public lrm::InflowLink {
- public:
-  explicit RecordingLink(std::shared_ptr<lrm::ApproachFluid> fluid) : fluid_(std::move(fluid)) {}
-  rotor::RotorInflow exchange(const lrm::InflowRequest& r) override {
-    requests.push_back(r);
-    return fluid_->serve(r);
-  }
-  std::vector<lrm::InflowRequest> requests;
-
- private:
-  std::shared_ptr<lrm::ApproachFluid> fluid_;
-};
-
-lrm::ApproachConfig config(const std::string& inflow, double duration) {
-  lrm::ApproachConfig c;
-  c.table = tiny_table();
-  c.inflow = inflow;
-  c.duration = duration;
-  c.startup = 0.0;
-  c.lrm.nodes = 16;
-  c.lrm.backend = lbm::Backend::Cpu;
-  return c;
-}
+lrm::ApproachConfig config(const std::string& inflow, double duration) { return test::tiny_approach(inflow, duration); }
 
 // A simulated-time LRM approach 10 m behind the spot, 5 m above the deck: the fluid side that served
 // it and every request it sent.

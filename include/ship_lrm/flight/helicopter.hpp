@@ -77,8 +77,10 @@ class Helicopter {
   Engine& engine() { return engine_; }
   EngineState& engine_state() { return engine_state_; }
   const RigidBody& rigid_body() const { return rigid_; }
-  // The rotor state handed to the inflow model (mr axes).
+  // The rotor state handed to the inflow model (mr axes), with the loads of the last step.
   rotor::RotorDiskState disk_state() const;
+  // The same without the loads: time, rotor speed, the hub's motion and its pose in the world.
+  rotor::RotorDiskState disk_motion() const;
   // Rotation body <- mr.
   const Eigen::Matrix3d& mr_to_body() const { return mr_to_body_; }
 

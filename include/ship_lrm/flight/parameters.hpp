@@ -63,6 +63,11 @@ struct ControlParameters {
   double tail_min = 0, tail_max = 0;              // rad at 0 % / 100 % pedal
 };
 
+// Where the helicopter touches a surface it lands on (a free flight ends there: no contact dynamics).
+struct LandingGearParameters {
+  std::vector<Eigen::Vector3d> contact_points;  // m, body FRD from the cg; empty: contact not detected
+};
+
 struct HelicopterParameters {
   std::string source;  // file it came from
   MassParameters mass;
@@ -73,6 +78,7 @@ struct HelicopterParameters {
   SurfaceParameters stabiliser, fin;
   EngineParameters engine;
   ControlParameters controls;
+  LandingGearParameters landing_gear;  // optional in the file
   double time_step = 0.00180352;
   int blade_substeps = 1;
 };

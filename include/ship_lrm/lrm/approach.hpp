@@ -32,7 +32,7 @@ struct ApproachSample {
   Vec3 cg = Vec3::Zero();                         // m, mean frame
   double distance = 0;                            // m behind the landing spot
   double height_above_deck = 0;                   // m, cg above the (moving) deck plane
-  double speed = 0;                               // m/s relative to the ship
+  double speed = 0;                               // m/s towards the bow, relative to the mean frame
   double thrust = 0, ct = 0, cmx = 0, cmy = 0;    // N, -, -, -
   double main_power = 0;                          // W
   Vec3 inflow_mean = Vec3::Zero();                // m/s, mr axes, relative to the rotor frame
@@ -59,7 +59,12 @@ class ShipApproach {
   }
   // Real time: the deadline statistics, else nullptr.
   const RealTimeInflow* realtime_inflow() const { return realtime_; }
+  // The duration is over, or (free flight) the landing gear touched the ship or the sea.
   bool done() const;
+  // Free flight: whether the airframe flies now (it is held on the path during the start-up).
+  bool released() const;
+  // Free flight: how the run ended early ("" while it goes on, or when it ran its duration).
+  const std::string& end_reason() const { return end_reason_; }
   double time() const { return heli_->time(); }
   double time_step() const { return heli_->time_step(); }
   const ApproachSample& sample() const { return sample_; }
@@ -77,8 +82,10 @@ class ShipApproach {
   // nullptr. In real time it runs in the LRM thread: read only lost(), lost_reason() (once lost) and
   // fallback_calls() from here.
   const LinkedInflow* linked_inflow() const { return linked_; }
-  // The domain's pose at approach time t (also the ROS layer's tf), and the table's time then.
+  // The domain's pose on the path at approach time t (held flight), and the table's time then.
   DomainPose domain_pose(double t) const;
+  // The domain's pose where the rotor of `state` is (free flight: the helicopter's own pose).
+  DomainPose domain_pose(const rotor::RotorDiskState& state) const;
   double table_time(double t) const { return table_->info().start_time + cfg_.table_offset + t; }
   // The ship's placement (ship frame <-> mean frame) at approach time t.
   wake::ShipPlacement ship_placement(double t) const { return ship_.motion->placement(table_time(t)); }
@@ -86,8 +93,11 @@ class ShipApproach {
   double wall_seconds() const { return wall_seconds_; }
 
  private:
-  void place(double t, bool start);  // path, walls, faces for time t; start: reset the helicopter there
+  // Walls and faces for time t where the helicopter is: on the path (start: reset it there) or, in
+  // free flight after the start-up, where it flew to.
+  void place(double t, bool start, bool on_path);
   void record();
+  void check_contact();  // free flight: ends the run where a landing-gear point touches ship or sea
   ApproachConfig cfg_;
   std::shared_ptr<wake::WakeTable> table_;
   ApproachShip ship_;
@@ -101,6 +111,7 @@ class ShipApproach {
   std::vector<wake::WakeSample> hub_air_;
   ApproachSample sample_;
   double wall_seconds_ = 0;
+  std::string end_reason_;
 };
 
 }  // namespace ship_lrm::lrm

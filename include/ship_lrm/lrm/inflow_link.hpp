@@ -47,8 +47,8 @@ class InflowLink {
 
 class LinkedInflow final : public rotor::InflowModel {
  public:
-  // placement(t): the domain's pose and the table time at flight-model time t.
-  using Placement = std::function<void(double t, DomainPose& pose, double& table_time)>;
+  // placement(state): the domain's pose and the table time for the rotor state (at its time).
+  using Placement = std::function<void(const rotor::RotorDiskState& state, DomainPose& pose, double& table_time)>;
   LinkedInflow(std::shared_ptr<InflowLink> link, Placement placement);
   std::string name() const override { return "lrm"; }
   void reset(const rotor::RotorDiskState& state) override;

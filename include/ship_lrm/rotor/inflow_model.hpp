@@ -51,6 +51,11 @@ struct RotorDiskState {
   Vec3 aero_force = Vec3::Zero();    // total aerodynamic force on the blades, mr axes, N
   Vec3 aero_moment = Vec3::Zero();   // its moment about the hub, mr axes, N m
   RotorForceHarmonics harmonics;     // aerodynamic force over azimuth, thesis 6.5
+  // Where the rotor is in the flight model's world frame (NED), for inflow models that place a
+  // domain there (the LRM around a freely flying helicopter).
+  Vec3 hub_position = Vec3::Zero();                           // m
+  Eigen::Matrix3d mr_to_world = Eigen::Matrix3d::Identity();  // rotation mr axes -> world axes
+  Vec3 hub_world_velocity = Vec3::Zero();                     // m/s, world axes, relative to the world (not the air)
 };
 
 // Adds the apparent air motion -omega x p of a frame rotating at `body_rate` (mr axes) over the disk,

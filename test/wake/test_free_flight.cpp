@@ -1,0 +1,185 @@
+// Free flight in the ship approach (lrm/approach.hpp, ApproachConfig::free_flight; fly.launch): the
+// airframe is held on the path during the start-up, then flies from there. Newton's law for the body
+// against its own rotor's thrust, the trimmed release, the LRM domain going with the body (over the
+// inflow link, as the ROS layer sends it), the end where the skids touch the ship or the sea, and a
+// start inside the ship refused.
+#include <gtest/gtest.h>
+
+#include "ship_lrm/flight/parameters.hpp"
+#include "ship_lrm/flight/trim.hpp"
+#include "ship_lrm/lrm/approach.hpp"
+#include "ship_lrm/lrm/approach_fluid.hpp"
+#include "tiny_approach.hpp"
+
+using namespace ship_lrm;
+using Vec3 = Eigen::Vector3d;
+
+namespace {
+
+// Pitt-Peters in the table's free stream (no wake): the trim holds exactly there.
+lrm::ApproachConfig free_stream_flight(double startup, double duration) {
+  lrm::ApproachConfig c = test::tiny_approach("pitt_peters", duration);
+  c.wake = false;
+  c.startup = startup;
+  c.free_flight = true;
+  return c;
+}
+
+Vec3 ground_velocity(const lrm::ShipApproach& a) { return a.helicopter().body().attitude * a.helicopter().body().velocity; }
+
+}  // namespace
+
+// Released from the trim (after a start-up in which the blades settle), the helicopter keeps the
+// trimmed flight: its velocity departs from the held path's by no more than the trim's tolerance on the
+// revolution-averaged accelerations allows (2e-3 g, TrimOptions), over one second. Until the release it
+// is exactly on the path.
+TEST(FreeFlight, ReleasedFromTheTrimItKeepsTheTrimmedFlight) {
+  const auto params = flight::load_default_bo105();
+  const double release = 0.5, flown = 1.0;
+  lrm::ApproachConfig held_cfg = free_stream_flight(release, release + flown);
+  held_cfg.free_flight = false;
+  lrm::ShipApproach held(held_cfg, params), free(free_stream_flight(release, release + flown), params);
+  ASSERT_TRUE(free.trim().converged);
+  EXPECT_FALSE(free.released());
+  while (!held.done()) {
+    held.step();
+    free.step();
+    if (free.time() <= release - 0.5 * free.time_step()) {
+      ASSERT_FALSE(free.released());
+      ASSERT_EQ(free.sample().cg, held.sample().cg) << "t = " << free.time();
+    }
+  }
+  EXPECT_TRUE(free.released());
+  EXPECT_TRUE(free.end_reason().empty());
+  const double tolerance = flight::TrimOptions{}.tolerance * params.mass.gravity * flown;  // m/s
+  const Vec3 dv = ground_velocity(free) - ground_velocity(held);
+  EXPECT_LT(dv.norm(), tolerance) << dv.transpose();
+  EXPECT_LT((free.sample().cg - held.sample().cg).norm(), tolerance * flown) << (free.sample().cg - held.sample().cg).transpose();
+  // the path moved on at 5 m/s relative to the ship; the free helicopter with it
+  EXPECT_NEAR(free.sample().distance, held.sample().distance, tolerance * flown);
+  EXPECT_NEAR(free.sample().speed, 5.0, tolerance);
+}
+
+// Newton for the free body: with 10 % more collective after the release, the climb over half a second
+// is the one the rotor's extra thrust gives (integrated twice, divided by the mass), within the other
+// forces' share (fuselage download and drag in the climb, the disk's tilt: a few per cent). Held on the
+// path it does not climb at all.
+TEST(FreeFlight, TheAirframeClimbsAsTheRotorsExtraThrustDrivesIt) {
+  const auto params = flight::load_default_bo105();
+  const double release = 0.5;
+  lrm::ApproachConfig c = free_stream_flight(release, release + 0.5);
+  lrm::ShipApproach up(c, params);
+  c.free_flight = false;
+  lrm::ShipApproach held(c, params);
+  while (!up.released()) {
+    up.step();
+    held.step();
+  }
+  flight::PilotControls k = up.trim().controls;
+  k.collective += 10;
+  up.helicopter().set_controls(k);
+  held.helicopter().set_controls(k);
+  const double m = params.mass.mass, T0 = up.trim().thrust, dt = up.time_step();
+  const double z0 = up.sample().cg.z(), held_z0 = held.sample().cg.z();
+  double w = 0, dz = 0;  // from the thrust alone (z down)
+  while (!up.done()) {
+    up.step();
+    held.step();
+    w += -(up.sample().thrust - T0) / m * dt;
+    dz += w * dt;
+  }
+  const double climb = -(up.sample().cg.z() - z0);
+  EXPECT_GT(-dz, 0.25);  // it does climb: 10 % collective is about 20 % more thrust
+  EXPECT_NEAR(climb, -dz, 0.05 * -dz);
+  EXPECT_NEAR(held.sample().cg.z(), held_z0, 1e-9);
+  EXPECT_GT(held.sample().thrust, T0);  // the held rotor felt the collective too
+}
+
+// The LRM domain goes with the flying helicopter: each request carries the rotor's own pose (hub,
+// axes, velocity, rate), which after the release leaves the path. Deterministic in simulated time.
+TEST(FreeFlight, TheLrmDomainFollowsTheFlyingHelicopter) {
+  const auto params = flight::load_default_bo105();
+  lrm::ApproachConfig c = test::tiny_approach("lrm", 0.4);
+  c.path.start_distance = 10.0;
+  c.path.height = 5.0;
+  c.startup = 0.1;
+  c.free_flight = true;
+  const auto run = [&] {
+    auto link = std::make_shared<test::RecordingLink>(std::make_shared<lrm::ApproachFluid>(c, params));
+    lrm::ShipApproach a(c, params, link);
+    while (!a.released()) a.step();
+    flight::PilotControls k = a.trim().controls;
+    k.collective += 10;
+    k.longitudinal += 10;
+    a.helicopter().set_controls(k);
+    std::vector<double> ct;
+    while (!a.done()) {
+      a.step();
+      ct.push_back(a.sample().ct);
+    }
+    return std::make_pair(ct, link->requests);
+  };
+  const auto first = run(), second = run();
+  EXPECT_EQ(first.first, second.first);
+  const auto& requests = first.second;
+  ASSERT_GT(requests.size(), 100u);
+  const lrm::InflowRequest& last = requests.back();
+  EXPECT_GT(last.state.time, 0.3);
+  EXPECT_EQ(last.pose.hub, last.state.hub_position);
+  EXPECT_EQ(last.pose.rotation, last.state.mr_to_world);
+  EXPECT_EQ(last.pose.hub_velocity, last.state.hub_world_velocity);
+  EXPECT_EQ(last.pose.omega, last.state.body_rate);
+  // off the path: climbing (z down) and pitching (forward cyclic) by now
+  lrm::ApproachConfig path_cfg = c;
+  path_cfg.free_flight = false;
+  const lrm::ShipApproach on_path(path_cfg, params);
+  const lrm::DomainPose path = on_path.domain_pose(last.state.time);
+  EXPECT_LT(last.pose.hub.z(), path.hub.z() - 0.05);
+  EXPECT_GT(last.pose.omega.norm(), 0.01);  // rad/s
+}
+
+// The run ends where a skid touches the ship: dropped onto the deck with the collective down, it stops
+// when the lowest skid end (1.2 m below the cg when level, config/bo105.yaml) reaches the deck, and
+// says how fast it sank.
+// Over the sea it ends at the water; a start with the skids inside the ship is refused.
+TEST(FreeFlight, EndsWhereTheSkidsTouchTheShipOrTheSea) {
+  const auto params = flight::load_default_bo105();
+  ASSERT_EQ(params.landing_gear.contact_points.size(), 4u);
+  const double skids = params.landing_gear.contact_points[0].z();
+  const auto drop = [&](double distance, double height) {
+    lrm::ApproachConfig c = free_stream_flight(0.1, 2.0);  // the tiny table holds 2 s
+    c.path.start_distance = distance;
+    c.path.height = height;
+    auto a = std::make_unique<lrm::ShipApproach>(c, params);
+    while (!a->released()) a->step();
+    flight::PilotControls k = a->trim().controls;
+    k.collective = 0;
+    a->helicopter().set_controls(k);
+    while (!a->done()) a->step();
+    return a;
+  };
+  const auto deck = drop(5.0, 2.5);  // over the deck, the skids 1.3 m above it
+  EXPECT_LT(deck->time(), 1.5);
+  EXPECT_NE(deck->end_reason().find("touched the ship"), std::string::npos) << deck->end_reason();
+  // the lowest skid end (the attitude has changed: the nose drops with the collective) is on the deck,
+  // within one step's sink (4.6 m/s x 1.8 ms)
+  double lowest = 0;
+  for (const Vec3& p : params.landing_gear.contact_points) lowest = std::max(lowest, (deck->helicopter().body().attitude * p).z());
+  EXPECT_GT(lowest, skids - 0.5);
+  EXPECT_NEAR(deck->sample().height_above_deck, lowest, 0.01);
+  EXPECT_NE(deck->end_reason().find("sinking at"), std::string::npos);
+  EXPECT_GT(ground_velocity(*deck).z(), 1.0);  // m/s: it fell
+
+  const auto sea = drop(150.0, 2.0);  // far behind the stern
+  EXPECT_NE(sea->end_reason().find("hit the sea"), std::string::npos) << sea->end_reason();
+
+  lrm::ApproachConfig inside = free_stream_flight(0.1, 1.0);
+  inside.path.start_distance = 5.0;
+  inside.path.height = 0.5;  // skids 0.7 m into the deck
+  try {
+    lrm::ShipApproach a(inside, params);
+    FAIL() << "a start with the skids in the deck was accepted";
+  } catch (const lbm::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("landing gear"), std::string::npos) << e.what();
+  }
+}
