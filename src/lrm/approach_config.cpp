@@ -52,7 +52,12 @@ void validate(const ApproachConfig& cfg) {
 std::shared_ptr<wake::WakeTable> open_approach_table(const ApproachConfig& cfg) {
   validate(cfg);
   auto table = std::make_shared<wake::WakeTable>(cfg.table);
-  const wake::WakeTableInfo& info = table->info();
+  check_approach_table(cfg, *table);
+  return table;
+}
+
+void check_approach_table(const ApproachConfig& cfg, const wake::WakeTable& table) {
+  const wake::WakeTableInfo& info = table.info();
   if (info.scale != "full")
     throw lbm::ConfigError("approach: the wake table '" + cfg.table + "' is of a " + info.scale +
                            "-scale ship; the Bo 105 needs a full-scale table (ship_lrm wake --scale full)");
@@ -61,7 +66,6 @@ std::shared_ptr<wake::WakeTable> open_approach_table(const ApproachConfig& cfg) 
     throw lbm::ConfigError("approach: the wake table '" + cfg.table + "' covers " + num(info.end_time() - info.start_time) +
                            " s; the approach needs " + num(cfg.table_offset + cfg.duration) +
                            " s (shorten --duration or make a longer table with ship_lrm wake --duration)");
-  return table;
 }
 
 ApproachShip approach_ship(const ApproachConfig& cfg, const wake::WakeTableInfo& info) {

@@ -41,12 +41,12 @@ std::string missing_table_message(const std::string& path, bool is_default) {
   return "wake table '" + path + "' not found; make one with `ship_lrm wake --preset default --out " + path + "`";
 }
 
-lrm::ApproachConfig approach_config(const ros::NodeHandle& nh) {
+lrm::ApproachConfig approach_config(const ros::NodeHandle& nh, bool table_here) {
   lrm::ApproachConfig c;
   read(nh, "wake_file", c.table);
   const bool is_default = c.table.empty();
   if (is_default) c.table = wake::default_table_path();
-  if (!std::filesystem::exists(c.table)) throw ParamError(missing_table_message(c.table, is_default));
+  if (table_here && !std::filesystem::exists(c.table)) throw ParamError(missing_table_message(c.table, is_default));
   read(nh, "inflow", c.inflow);
   if (c.inflow != "lrm" && c.inflow != "pitt_peters")
     throw ParamError("parameter " + where(nh, "inflow") + " must be lrm or pitt_peters, got '" + c.inflow + "'");

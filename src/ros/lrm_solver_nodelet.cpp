@@ -4,6 +4,8 @@
 // answered on rotor/inflow; the domain's pose goes out as tf world_ned -> lrm_domain (the mr frame at
 // the hub, x forward, y starboard, z down), a plane through the hub as lrm/slice (PointCloud2 with
 // x, y, z, speed, u, v, w, wall), the domain's box as lrm/domain (Marker), and diagnostics.
+// wake_source: file (read the table here) or server (the WakeServer's table announced on wake/info,
+// its windows through the service wake/window: for a solver on a machine without the file).
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <nodelet/nodelet.h>
 #include <sensor_msgs/PointCloud2.h>
@@ -22,6 +24,7 @@
 #include "ship_lrm/ros/approach_params.hpp"
 #include "ship_lrm/ros/conversions.hpp"
 #include "ship_lrm/ros/run_status.hpp"
+#include "ship_lrm/ros/served_wake_table.hpp"
 #include "ship_lrm/ros/sim_epoch.hpp"
 
 namespace ship_lrm::ros_layer {
@@ -32,7 +35,10 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     ros::NodeHandle& nh = getNodeHandle();
     ros::NodeHandle& pnh = getPrivateNodeHandle();
     try {
-      const lrm::ApproachConfig cfg = approach_config(ros::NodeHandle(nh, "approach"));
+      pnh.param<std::string>("wake_source", wake_source_, "file");
+      if (wake_source_ != "file" && wake_source_ != "server")
+        throw ParamError("parameter " + pnh.resolveName("wake_source") + " must be file or server, got '" + wake_source_ + "'");
+      cfg_ = approach_config(ros::NodeHandle(nh, "approach"), wake_source_ == "file");
       pnh.param("slice_interval", slice_interval_, 0.1);
       pnh.param("slice_normal", slice_normal_, 1);
       pnh.param("clock_offset", clock_offset_, 1.0);
@@ -41,21 +47,49 @@ class LrmSolverNodelet : public nodelet::Nodelet {
       if (!(slice_interval_ > 0)) throw ParamError("parameter " + pnh.resolveName("slice_interval") + " must be > 0 s");
       std::string config;
       pnh.param<std::string>("helicopter_config", config, "");
-      const flight::HelicopterParameters p = config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(config);
-      if (cfg.inflow != "lrm")
-        NODELET_WARN("LrmSolver: approach/inflow is %s; the flight model will not ask for the LRM", cfg.inflow.c_str());
-      fluid_ = std::make_unique<lrm::ApproachFluid>(cfg, p);
-      bool realtime = false;
-      pnh.param("realtime", realtime, false);
-      if (realtime) fluid_->set_catch_up_limit(lrm::kRealTimeCatchUpSteps);
+      params_ = config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(config);
+      if (cfg_.inflow != "lrm")
+        NODELET_WARN("LrmSolver: approach/inflow is %s; the flight model will not ask for the LRM", cfg_.inflow.c_str());
+      pnh.param("realtime", realtime_, false);
+      if (wake_source_ == "file") start(nullptr);
     } catch (const std::exception& e) {
-      NODELET_FATAL("LrmSolver: %s", e.what());
-      report_failure(getNodeHandle(), std::string("LrmSolver: ") + e.what());
+      fail(e.what());
       return;
     }
+    if (wake_source_ == "server") {
+      NODELET_INFO("LrmSolver: waiting for the wake server's table on %s", nh.resolveName("wake/info").c_str());
+      info_ = nh.subscribe("wake/info", 1, &LrmSolverNodelet::on_info, this);
+    }
+  }
+
+  void fail(const std::string& why) {
+    failed_ = true;
+    NODELET_FATAL("LrmSolver: %s", why.c_str());
+    report_failure(getNodeHandle(), "LrmSolver: " + why);
+  }
+
+  // wake_source:=server: the table the wake server announced, its windows through its service
+  void on_info(const ship_lrm::WakeInfo::ConstPtr& m) {
+    if (fluid_ || failed_) return;
+    try {
+      auto table = served_wake_table(*m, getNodeHandle());
+      cfg_.table = m->path;
+      lrm::check_approach_table(cfg_, *table);
+      start(std::move(table));
+    } catch (const std::exception& e) {
+      fail(e.what());
+    }
+  }
+
+  // The domain (on the table given, or the file's), then the topics.
+  void start(std::shared_ptr<wake::WakeTable> table) {
+    ros::NodeHandle& nh = getNodeHandle();
+    fluid_ = std::make_unique<lrm::ApproachFluid>(cfg_, params_, std::move(table));
+    if (realtime_) fluid_->set_catch_up_limit(lrm::kRealTimeCatchUpSteps);
     const lrm::LrmDomain& d = fluid_->domain();
-    NODELET_INFO("LrmSolver: N = %d, a = %g, %d^3 cells, %s, LBM step %.3f ms", d.config().nodes, d.config().reach, d.cells_per_edge(),
-                 fluid_->domain().solver().backend_name(), 1e3 * d.time_step());
+    NODELET_INFO("LrmSolver: N = %d, a = %g, %d^3 cells, %s, LBM step %.3f ms, wake table from %s", d.config().nodes, d.config().reach,
+                 d.cells_per_edge(), fluid_->domain().solver().backend_name(), 1e3 * d.time_step(),
+                 wake_source_ == "file" ? "the file" : "the wake server");
     inflow_ = nh.advertise<ship_lrm::RotorInflow>("rotor/inflow", 4);
     slice_ = nh.advertise<sensor_msgs::PointCloud2>("lrm/slice", 2);
     box_ = nh.advertise<visualization_msgs::Marker>("lrm/domain", 2, true);
@@ -101,7 +135,12 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     answer.header.frame_id = "lrm_domain";
     inflow_.publish(answer);
     publish_views(r);
-    diagnostics_.update();
+    // the updater's period is 1 s of ROS time, which a short simulated run may not see twice: the
+    // first request and every 100th publish at once
+    if (served_ % 100 == 1)
+      diagnostics_.force_update();
+    else
+      diagnostics_.update();
   }
 
   void publish_views(const lrm::InflowRequest& r) {
@@ -175,6 +214,7 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     else
       stat.summary(diagnostic_msgs::DiagnosticStatus::OK, "running");
     stat.add("requests served", served_);
+    stat.add("wake table from", wake_source_);
     stat.add("LBM steps", std::lround(fluid_->domain().time() / fluid_->domain().time_step()));
     stat.add("LBM steps dropped to catch up (real time)", fluid_->dropped_steps());
     stat.add("LBM step (ms)", step_ms_);
@@ -185,6 +225,10 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     stat.add("face refreshes", fluid_->face_refreshes());
   }
 
+  lrm::ApproachConfig cfg_;
+  flight::HelicopterParameters params_;
+  std::string wake_source_ = "file";
+  bool realtime_ = false, failed_ = false;
   std::unique_ptr<lrm::ApproachFluid> fluid_;
   double slice_interval_ = 0.1, clock_offset_ = 1.0, next_slice_ = 0, step_ms_ = 0, mlups_ = 0, max_mach_ = 0;
   SimEpoch epoch_;
@@ -193,7 +237,7 @@ class LrmSolverNodelet : public nodelet::Nodelet {
   bool diverged_ = false;
   std::string failure_;
   ros::Publisher inflow_, slice_, box_;
-  ros::Subscriber forces_;
+  ros::Subscriber forces_, info_;
   tf2_ros::TransformBroadcaster tf_;
   diagnostic_updater::Updater diagnostics_;
 };

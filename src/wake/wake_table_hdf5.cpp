@@ -289,272 +289,75 @@ void WakeTableWriter::write_xdmf() const {
 
 // ---- reader -----------------------------------------------------------------------------------------
 
-struct WakeTable::Impl {
+namespace {
+class Hdf5Source final : public WindowSource {
+ public:
   Handle file, vel, rho;
   std::string path;
-};
-
-struct WakeTable::ReadAhead {
-  std::future<bool> done;
-  Window w;
-  int frame = -1;
-};
-
-WakeTable::WakeTable(const std::string& path, std::size_t window_points) : impl_(std::make_unique<Impl>()), max_points_(window_points) {
-  const Hdf5Lock hdf5_lock(hdf5_mutex());
-  try {
-    quiet();
-    impl_->path = path;
-    if (!std::filesystem::exists(path))
-      throw TableError("wake table '" + path + "' does not exist; make one with `ship_lrm wake --preset default --out " + path + "`");
-    if (H5Fis_hdf5(path.c_str()) <= 0) throw TableError("wake table '" + path + "' is not an HDF5 file (or is truncated)");
-    impl_->file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-    if (impl_->file < 0) throw TableError("wake table '" + path + "' cannot be opened (corrupt or truncated HDF5)");
-    const hid_t f = impl_->file;
-    const int version = static_cast<int>(read_attr_numbers(f, "format_version", 1, path)[0]);
-    if (version != kWakeTableFormatVersion)
-      throw TableError("wake table '" + path + "' has format version " + std::to_string(version) + "; this program reads version " +
-                       std::to_string(kWakeTableFormatVersion) + " (make it again with `ship_lrm wake`)");
-    const std::string units = read_attr_string(f, "units", path);
-    if (units != kWakeTableUnits)
-      throw TableError("wake table '" + path + "' has units '" + units + "', expected '" + kWakeTableUnits + "'");
-    const auto o = read_attr_numbers(f, "origin", 3, path);
-    info_.origin = {o[0], o[1], o[2]};
-    info_.spacing = read_attr_numbers(f, "spacing", 1, path)[0];
-    const auto sh = read_attr_numbers(f, "shape", 3, path);
-    info_.shape = {static_cast<int>(sh[0]), static_cast<int>(sh[1]), static_cast<int>(sh[2])};
-    info_.frame_interval = read_attr_numbers(f, "frame_interval", 1, path)[0];
-    info_.start_time = read_attr_numbers(f, "start_time", 1, path)[0];
-    const auto fs = read_attr_numbers(f, "free_stream", 3, path);
-    info_.free_stream = {fs[0], fs[1], fs[2]};
-    info_.free_density = read_attr_numbers(f, "free_density", 1, path)[0];
-    info_.ship = read_attr_string(f, "ship", path);
-    info_.scale = read_attr_string(f, "scale", path);
-    info_.motion = read_attr_string(f, "motion", path);
-    if (!(info_.spacing > 0) || !(info_.frame_interval > 0) || info_.shape[0] < 2 || info_.shape[1] < 2 || info_.shape[2] < 2)
-      throw TableError("wake table '" + path + "': invalid grid or frame interval attributes");
-    impl_->vel = Handle(H5Dopen2(f, "/velocity", H5P_DEFAULT), H5Dclose);
-    impl_->rho = Handle(H5Dopen2(f, "/density", H5P_DEFAULT), H5Dclose);
-    if (impl_->vel < 0 || impl_->rho < 0) throw TableError("wake table '" + path + "': /velocity or /density is missing");
-    Handle sv(H5Dget_space(impl_->vel), H5Sclose), sr(H5Dget_space(impl_->rho), H5Sclose);
-    hsize_t dv[5] = {}, dr[4] = {};
-    if (H5Sget_simple_extent_ndims(sv) != 5 || H5Sget_simple_extent_ndims(sr) != 4)
-      throw TableError("wake table '" + path + "': /velocity or /density has the wrong rank");
-    H5Sget_simple_extent_dims(sv, dv, nullptr);
-    H5Sget_simple_extent_dims(sr, dr, nullptr);
-    const hsize_t nx = info_.shape[0], ny = info_.shape[1], nz = info_.shape[2];
-    if (dv[1] != nz || dv[2] != ny || dv[3] != nx || dv[4] != 3 || dr[1] != nz || dr[2] != ny || dr[3] != nx || dv[0] != dr[0])
-      throw TableError("wake table '" + path + "': dataset sizes do not match the shape attribute");
-    const int written = static_cast<int>(read_attr_numbers(f, "frames", 1, path)[0]);
-    info_.frames = static_cast<int>(std::min<hsize_t>(dv[0], static_cast<hsize_t>(std::max(written, 0))));
-    if (info_.frames < 1) throw TableError("wake table '" + path + "' holds no frames");
-    Handle type(H5Dget_type(impl_->vel), H5Tclose);
-    info_.half_precision = H5Tget_size(type) == 2;
-  } catch (...) {
-    impl_.reset();  // its handles close under the lock
-    throw;
+  ~Hdf5Source() override {
+    const Hdf5Lock hdf5_lock(hdf5_mutex());  // the handles close under the lock
+    rho.reset();
+    vel.reset();
+    file.reset();
   }
-}
-
-WakeTable::~WakeTable() {
-  if (ahead_ && ahead_->done.valid()) ahead_->done.wait();  // the read-ahead thread uses impl_
-  const Hdf5Lock hdf5_lock(hdf5_mutex());
-  impl_.reset();
-}
-
-void WakeTable::read_frame(int frame, std::vector<float>& velocity, std::vector<float>& density) const {
-  const Hdf5Lock hdf5_lock(hdf5_mutex());
-  if (frame < 0 || frame >= info_.frames) throw TableError("wake table: frame " + std::to_string(frame) + " out of range");
-  const hsize_t f = static_cast<hsize_t>(frame);
-  velocity.resize(3 * info_.points());
-  density.resize(info_.points());
-  if (!frame_box(impl_->vel, impl_->rho, false, f, {0, 0, 0}, info_.shape, velocity.data(), density.data()))
-    throw TableError("wake table '" + impl_->path + "': frame " + std::to_string(frame) + " is unreadable (corrupt or truncated file)");
-}
-
-namespace {
-bool covers_box(const std::array<int, 3>& wlo, const std::array<int, 3>& wn, const std::array<int, 3>& lo, const std::array<int, 3>& hi) {
-  for (int d = 0; d < 3; ++d)
-    if (wlo[d] > lo[d] || wlo[d] + wn[d] <= hi[d]) return false;
-  return true;
-}
-std::uint64_t next_window_serial() {
-  static std::atomic<std::uint64_t> serials{0};
-  return ++serials;
-}
+  bool read(int frame, const std::array<int, 3>& lo, const std::array<int, 3>& n, float* velocity, float* density) override {
+    const Hdf5Lock hdf5_lock(hdf5_mutex());
+    return frame_box(vel, rho, false, static_cast<hsize_t>(frame), lo, n, velocity, density);
+  }
+  std::string name() const override { return "wake table '" + path + "'"; }
+};
 }  // namespace
 
-bool WakeTable::load(Window& w, int frame, const std::array<int, 3>& a, const std::array<int, 3>& n) const {
-  const std::size_t pts = static_cast<std::size_t>(n[0]) * n[1] * n[2];
-  w.u.resize(3 * pts);
-  w.rho.resize(pts);
+std::unique_ptr<WindowSource> open_table_file(const std::string& path, WakeTableInfo& info) {
   const Hdf5Lock hdf5_lock(hdf5_mutex());
-  return frame_box(impl_->vel, impl_->rho, false, static_cast<hsize_t>(frame), a, n, w.u.data(), w.rho.data());
-}
-
-void WakeTable::read_ahead(int frame, const Window& like) {
-  if (frame >= info_.frames || like.frame < 0) return;
-  if (ahead_ && ahead_->frame == frame) return;  // on its way or waiting
-  if (w_[frame % 2].frame == frame && w_[frame % 2].lo == like.lo && w_[frame % 2].n == like.n) return;
-  if (!ahead_) ahead_ = std::make_unique<ReadAhead>();
-  if (ahead_->done.valid()) ahead_->done.wait();  // an older read-ahead that was not used
-  ahead_->frame = frame;
-  ahead_->w.frame = frame;
-  ahead_->w.lo = like.lo;
-  ahead_->w.n = like.n;
-  ReadAhead* r = ahead_.get();
-  r->done = std::async(std::launch::async, [this, r] { return load(r->w, r->frame, r->w.lo, r->w.n); });
-}
-
-const WakeTable::Window& WakeTable::window(int frame, const std::array<int, 3>& lo, const std::array<int, 3>& hi) {
-  // consecutive frames alternate between the two slots, so the two frames of one sample never evict
-  // each other
-  Window& w = w_[frame % 2];
-  if (w.frame == frame && covers_box(w.lo, w.n, lo, hi)) return w;
-  if (ahead_ && ahead_->frame == frame) {  // read ahead: wait for it (usually long done) and take it
-    const bool ok = ahead_->done.get();
-    ahead_->frame = -1;
-    if (ok && covers_box(ahead_->w.lo, ahead_->w.n, lo, hi)) {
-      std::swap(w, ahead_->w);
-      w.serial = next_window_serial();
-      ++loads_;
-      ++read_ahead_hits_;
-      return w;
-    }
-  }
-  // load a window around [lo, hi] with a margin (the domain moves on), bounded by max_points_
-  std::array<int, 3> a{}, n{};
-  std::size_t need = 1, with_margin = 1;
-  for (int d = 0; d < 3; ++d) {
-    need *= static_cast<std::size_t>(hi[d] - lo[d] + 1);
-    const int margin = (hi[d] - lo[d] + 1) / 2 + 1;
-    a[d] = std::max(0, lo[d] - margin);
-    n[d] = std::min(info_.shape[d] - 1, hi[d] + margin) - a[d] + 1;
-    with_margin *= static_cast<std::size_t>(n[d]);
-  }
-  if (need > max_points_)
-    throw TableError("wake table: the requested region (" + std::to_string(need) + " grid points) exceeds the window limit of " +
-                     std::to_string(max_points_) + " points");
-  if (with_margin > max_points_)
-    for (int d = 0; d < 3; ++d) {
-      a[d] = lo[d];
-      n[d] = hi[d] - lo[d] + 1;
-    }
-  if (!load(w, frame, a, n)) {
-    w.frame = -1;
-    throw TableError("wake table '" + impl_->path + "': frame " + std::to_string(frame) + " is unreadable (corrupt or truncated file)");
-  }
-  w.frame = frame;
-  w.lo = a;
-  w.n = n;
-  w.serial = next_window_serial();
-  ++loads_;
-  return w;
-}
-
-namespace {
-// Time of a sample as the frames around it and the weight of the second (clamped to the table).
-void frame_pair(const WakeTableInfo& info, double t, int& f0, int& f1, double& weight1) {
-  double ft = (t - info.start_time) / info.frame_interval;
-  ft = std::clamp(ft, 0.0, static_cast<double>(info.frames - 1));
-  f0 = std::min(static_cast<int>(ft), info.frames - 1);
-  f1 = std::min(f0 + 1, info.frames - 1);
-  weight1 = ft - f0;
-}
-}  // namespace
-
-WakeTable::Frames WakeTable::frames(double t, const std::array<double, 3>& lo_m, const std::array<double, 3>& hi_m) {
-  if (!std::isfinite(t)) throw TableError("wake table: sample time is not finite");
-  Frames r;
-  for (int d = 0; d < 3; ++d) {
-    if (!std::isfinite(lo_m[d]) || !std::isfinite(hi_m[d]) || lo_m[d] > hi_m[d])
-      throw TableError("wake table: the box to feed is not valid");
-    r.grid.origin[d] = info_.origin[d];
-    r.grid.shape[d] = info_.shape[d];
-    r.grid.free_stream[d] = static_cast<float>(info_.free_stream[d]);
-  }
-  r.grid.spacing = info_.spacing;
-  int f0, f1;
-  frame_pair(info_, t, f0, f1, r.grid.weight1);
-  // the grid cells the box touches, clipped to the table (a box that misses it: empty windows)
-  std::array<int, 3> lo{}, hi{};
-  for (int d = 0; d < 3; ++d) {
-    const double a = (lo_m[d] - info_.origin[d]) / info_.spacing, b = (hi_m[d] - info_.origin[d]) / info_.spacing;
-    if (b < 0.0 || a > info_.shape[d] - 1) return r;
-    lo[d] = std::clamp(static_cast<int>(std::floor(a)), 0, info_.shape[d] - 2);
-    hi[d] = std::clamp(static_cast<int>(std::floor(b)) + 1, 1, info_.shape[d] - 1);
-  }
-  const int fr[2] = {f0, f1};
-  for (int s = 0; s < 2; ++s) {
-    const Window& w = window(fr[s], lo, hi);
-    for (int d = 0; d < 3; ++d) {
-      r.window[s].lo[d] = w.lo[d];
-      r.window[s].n[d] = w.n[d];
-    }
-    r.window[s].u = w.u.data();
-    r.serial[s] = w.serial;
-  }
-  read_ahead(f1 + 1, w_[f1 % 2]);
-  return r;
-}
-
-void WakeTable::sample(double t, const std::vector<double>& xyz, std::vector<WakeSample>& out) {
-  const std::size_t np = xyz.size() / 3;
-  out.resize(np);
-  if (!std::isfinite(t)) throw TableError("wake table: sample time is not finite");
-  // grid coordinates and the box of the points inside the table
-  std::array<int, 3> lo{info_.shape[0], info_.shape[1], info_.shape[2]}, hi{-1, -1, -1};
-  std::vector<double> g(xyz.size());
-  std::vector<char> in(np);
-  const long npl = static_cast<long>(np);
-  // Every point is independent: the loops over points run on the OpenMP threads (the LRM's faces
-  // have 10^4 - 10^5 points, sampled whenever they are due).
-#pragma omp parallel for schedule(static)
-  for (long p = 0; p < npl; ++p) {
-    for (int d = 0; d < 3; ++d) g[3 * p + d] = (xyz[3 * p + d] - info_.origin[d]) / info_.spacing;
-    in[p] = lbm::grid_inside(&g[3 * p], info_.shape.data());
-  }
-  for (std::size_t p = 0; p < np; ++p) {
-    if (!in[p]) continue;
-    int i[3];
-    double fr[3];
-    lbm::grid_cell(&g[3 * p], info_.shape.data(), i, fr);
-    for (int d = 0; d < 3; ++d) {
-      lo[d] = std::min(lo[d], i[d]);
-      hi[d] = std::max(hi[d], i[d] + 1);
-    }
-  }
-  const WakeSample free{
-      {static_cast<float>(info_.free_stream[0]), static_cast<float>(info_.free_stream[1]), static_cast<float>(info_.free_stream[2])},
-      static_cast<float>(info_.free_density)};
-  if (hi[0] < 0) {
-    std::fill(out.begin(), out.end(), free);
-    return;
-  }
-  int f0, f1;
-  double at;
-  frame_pair(info_, t, f0, f1, at);
-  const Window* w[2] = {&window(f0, lo, hi), &window(f1, lo, hi)};
-#pragma omp parallel for schedule(static)
-  for (long p = 0; p < npl; ++p) {
-    if (!in[p]) {
-      out[p] = free;
-      continue;
-    }
-    double acc[4] = {0, 0, 0, 0};
-    int i[3];
-    double fr[3];
-    lbm::grid_cell(&g[3 * p], info_.shape.data(), i, fr);
-    for (int s = 0; s < 2; ++s) {  // the same interpolation as the LRM's face feed (grid_feed.hpp)
-      const Window& W = *w[s];
-      const double wt = s == 0 ? 1.0 - at : at;
-      if (wt == 0.0) continue;
-      lbm::accumulate_trilinear(W.u.data(), 3, W.lo.data(), W.n.data(), i, fr, wt, acc);
-      lbm::accumulate_trilinear(W.rho.data(), 1, W.lo.data(), W.n.data(), i, fr, wt, acc + 3);
-    }
-    out[p] = {{static_cast<float>(acc[0]), static_cast<float>(acc[1]), static_cast<float>(acc[2])}, static_cast<float>(acc[3])};
-  }
-  read_ahead(f1 + 1, *w[1]);
+  auto src = std::make_unique<Hdf5Source>();
+  quiet();
+  src->path = path;
+  if (!std::filesystem::exists(path))
+    throw TableError("wake table '" + path + "' does not exist; make one with `ship_lrm wake --preset default --out " + path + "`");
+  if (H5Fis_hdf5(path.c_str()) <= 0) throw TableError("wake table '" + path + "' is not an HDF5 file (or is truncated)");
+  src->file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (src->file < 0) throw TableError("wake table '" + path + "' cannot be opened (corrupt or truncated HDF5)");
+  const hid_t f = src->file;
+  const int version = static_cast<int>(read_attr_numbers(f, "format_version", 1, path)[0]);
+  if (version != kWakeTableFormatVersion)
+    throw TableError("wake table '" + path + "' has format version " + std::to_string(version) + "; this program reads version " +
+                     std::to_string(kWakeTableFormatVersion) + " (make it again with `ship_lrm wake`)");
+  const std::string units = read_attr_string(f, "units", path);
+  if (units != kWakeTableUnits) throw TableError("wake table '" + path + "' has units '" + units + "', expected '" + kWakeTableUnits + "'");
+  const auto o = read_attr_numbers(f, "origin", 3, path);
+  info.origin = {o[0], o[1], o[2]};
+  info.spacing = read_attr_numbers(f, "spacing", 1, path)[0];
+  const auto sh = read_attr_numbers(f, "shape", 3, path);
+  info.shape = {static_cast<int>(sh[0]), static_cast<int>(sh[1]), static_cast<int>(sh[2])};
+  info.frame_interval = read_attr_numbers(f, "frame_interval", 1, path)[0];
+  info.start_time = read_attr_numbers(f, "start_time", 1, path)[0];
+  const auto fs = read_attr_numbers(f, "free_stream", 3, path);
+  info.free_stream = {fs[0], fs[1], fs[2]};
+  info.free_density = read_attr_numbers(f, "free_density", 1, path)[0];
+  info.ship = read_attr_string(f, "ship", path);
+  info.scale = read_attr_string(f, "scale", path);
+  info.motion = read_attr_string(f, "motion", path);
+  if (!(info.spacing > 0) || !(info.frame_interval > 0) || info.shape[0] < 2 || info.shape[1] < 2 || info.shape[2] < 2)
+    throw TableError("wake table '" + path + "': invalid grid or frame interval attributes");
+  src->vel = Handle(H5Dopen2(f, "/velocity", H5P_DEFAULT), H5Dclose);
+  src->rho = Handle(H5Dopen2(f, "/density", H5P_DEFAULT), H5Dclose);
+  if (src->vel < 0 || src->rho < 0) throw TableError("wake table '" + path + "': /velocity or /density is missing");
+  Handle sv(H5Dget_space(src->vel), H5Sclose), sr(H5Dget_space(src->rho), H5Sclose);
+  hsize_t dv[5] = {}, dr[4] = {};
+  if (H5Sget_simple_extent_ndims(sv) != 5 || H5Sget_simple_extent_ndims(sr) != 4)
+    throw TableError("wake table '" + path + "': /velocity or /density has the wrong rank");
+  H5Sget_simple_extent_dims(sv, dv, nullptr);
+  H5Sget_simple_extent_dims(sr, dr, nullptr);
+  const hsize_t nx = info.shape[0], ny = info.shape[1], nz = info.shape[2];
+  if (dv[1] != nz || dv[2] != ny || dv[3] != nx || dv[4] != 3 || dr[1] != nz || dr[2] != ny || dr[3] != nx || dv[0] != dr[0])
+    throw TableError("wake table '" + path + "': dataset sizes do not match the shape attribute");
+  const int written = static_cast<int>(read_attr_numbers(f, "frames", 1, path)[0]);
+  info.frames = static_cast<int>(std::min<hsize_t>(dv[0], static_cast<hsize_t>(std::max(written, 0))));
+  if (info.frames < 1) throw TableError("wake table '" + path + "' holds no frames");
+  Handle type(H5Dget_type(src->vel), H5Tclose);
+  info.half_precision = H5Tget_size(type) == 2;
+  return src;
 }
 
 }  // namespace ship_lrm::wake

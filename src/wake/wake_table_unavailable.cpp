@@ -1,4 +1,5 @@
-// Stand-in for the HDF5 wake table when the core is built without HDF5 (a bare GPU machine).
+// Stand-in for the HDF5 wake table file when the core is built without HDF5 (a bare GPU machine): a
+// table can still be served from another process (WakeTable over a WindowSource).
 #include "ship_lrm/wake/wake_table.hpp"
 
 namespace ship_lrm::wake {
@@ -16,13 +17,6 @@ void WakeTableWriter::write_statistic(const std::string&, const std::vector<floa
 void WakeTableWriter::close() {}
 void WakeTableWriter::write_xdmf() const {}
 
-struct WakeTable::Impl {};
-struct WakeTable::ReadAhead {};
-WakeTable::WakeTable(const std::string&, std::size_t) { unavailable(); }
-WakeTable::~WakeTable() = default;
-void WakeTable::sample(double, const std::vector<double>&, std::vector<WakeSample>&) { unavailable(); }
-WakeTable::Frames WakeTable::frames(double, const std::array<double, 3>&, const std::array<double, 3>&) { unavailable(); }
-void WakeTable::read_frame(int, std::vector<float>&, std::vector<float>&) const { unavailable(); }
-const WakeTable::Window& WakeTable::window(int, const std::array<int, 3>&, const std::array<int, 3>&) { unavailable(); }
+std::unique_ptr<WindowSource> open_table_file(const std::string&, WakeTableInfo&) { unavailable(); }
 
 }  // namespace ship_lrm::wake

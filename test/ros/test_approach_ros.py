@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Issue 6 acceptance 1 and 2 (rostest, launched by approach.test, and by free_flight.test with
-~free_flight true): the approach in simulated time on a tiny table publishes its topics and every tf
+"""Issue 6 acceptance 1 and 2 (rostest, launched by approach.test, by free_flight.test with
+~free_flight true, and by wake_server.test, whose solver gets the table from the wake server): the approach in simulated time on a tiny table publishes its topics and every tf
 frame; its loads are finite and identical, sample by sample, to those of the ROS-free batch tool
 `ship_lrm approach` for the same configuration (held on the path, or flying freely after the start-up:
 then the LRM domain's pose travels in every request, and the helicopter leaves the path). The `trim`
@@ -37,6 +37,9 @@ class ApproachLaunch(unittest.TestCase):
             return lambda msg: seen.__setitem__(name, seen.get(name, 0) + 1)
 
         rospy.Subscriber("/rotor/loads", RotorLoads, loads.append)
+        sources = set()  # where the LRM solver says its wake table comes from (diagnostics)
+        rospy.Subscriber("/diagnostics", DiagnosticArray, lambda a: sources.update(
+            v.value for s in a.status if "LRM solver" in s.name for v in s.values if v.key == "wake table from"))
         for topic, kind in [("/odom", Odometry), ("/ship/twist", TwistStamped), ("/lrm/slice", PointCloud2),
                             ("/wake/info", WakeInfo), ("/diagnostics", DiagnosticArray)]:
             rospy.Subscriber(topic, kind, count(topic))
@@ -59,6 +62,7 @@ class ApproachLaunch(unittest.TestCase):
         for topic in ["/odom", "/ship/twist", "/lrm/slice", "/wake/info", "/diagnostics"]:
             self.assertGreater(seen.get(topic, 0), 0, "nothing on " + topic)
         self.assertGreaterEqual(seen["/odom"], int(DURATION / 0.02) - 2)  # 50 Hz in simulated time
+        self.assertEqual(sources, {rospy.get_param("~wake_source", "file")})
         for frame in FRAMES[1:]:
             self.assertTrue(buffer.can_transform("world", frame, rospy.Time(0), rospy.Duration(5.0)),
                             "no tf from world to " + frame)

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -196,4 +197,70 @@ TEST(WakeTable, ReadAheadServesTheNextFrame) {
   // frames 0 and 1 at the start, then frames 2 .. 5 as the time moves on: each read ahead
   EXPECT_EQ(table.window_loads(), 6u);
   EXPECT_EQ(table.window_read_ahead_hits(), 4u);
+}
+
+// A table whose windows come from elsewhere (the ROS wake server's service: WindowSource) gives the
+// file's values bit for bit, sampled and as the LRM's face windows; a source that fails names itself
+// and why, and a bad box or frame asked of the file is refused by name.
+TEST(WakeTable, AServedTableIsTheFileBitForBit) {
+  const std::string path = write_linear("served.h5", false, 4);
+  auto file = std::make_shared<WakeTable>(path);
+  class FromTable final : public WindowSource {
+   public:
+    explicit FromTable(std::shared_ptr<WakeTable> t) : t_(std::move(t)) {}
+    bool read(int frame, const std::array<int, 3>& lo, const std::array<int, 3>& n, float* u, float* rho) override {
+      if (fail) return false;
+      std::vector<float> a, b;
+      t_->read_box(frame, lo, n, a, b);  // what the wake server answers
+      std::copy(a.begin(), a.end(), u);
+      std::copy(b.begin(), b.end(), rho);
+      ++reads;
+      return true;
+    }
+    std::string name() const override { return "served test table"; }
+    bool fail = false;
+    int reads = 0;
+
+   private:
+    std::shared_ptr<WakeTable> t_;
+  };
+  auto source = std::make_unique<FromTable>(file);
+  FromTable* src = source.get();
+  WakeTable served(file->info(), std::move(source));
+  WakeTable reference(path);
+  const WakeTableInfo& in = reference.info();
+  std::vector<double> xyz;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> ux(0, 1);
+  for (int p = 0; p < 200; ++p)
+    xyz.insert(xyz.end(), {in.origin[0] + ux(rng) * 10, in.origin[1] + ux(rng) * 6, in.origin[2] + ux(rng) * 4});
+  std::vector<WakeSample> a, b;
+  for (double t : {in.start_time + 0.05, in.start_time + 0.17, in.start_time + 0.29}) {
+    reference.sample(t, xyz, a);
+    served.sample(t, xyz, b);
+    for (std::size_t p = 0; p < a.size(); ++p) {
+      ASSERT_EQ(a[p].u, b[p].u) << p;
+      ASSERT_EQ(a[p].rho, b[p].rho) << p;
+    }
+    const auto fa = reference.frames(t, {-9.0, -3.0, -5.0}, {-2.0, 1.0, -3.0}),
+               fb = served.frames(t, {-9.0, -3.0, -5.0}, {-2.0, 1.0, -3.0});
+    EXPECT_EQ(fa.grid.weight1, fb.grid.weight1);
+    for (int s = 0; s < 2; ++s) {
+      const std::size_t pts = static_cast<std::size_t>(fa.window[s].n[0]) * fa.window[s].n[1] * fa.window[s].n[2];
+      ASSERT_EQ(pts, static_cast<std::size_t>(fb.window[s].n[0]) * fb.window[s].n[1] * fb.window[s].n[2]);
+      EXPECT_TRUE(std::equal(fa.window[s].u, fa.window[s].u + 3 * pts, fb.window[s].u));
+    }
+  }
+  EXPECT_GT(src->reads, 0);
+  src->fail = true;
+  try {
+    served.sample(in.start_time, xyz, b);  // frame 0: no longer in memory (frames 2 and 3 are)
+    FAIL() << "a failing source was not reported";
+  } catch (const TableError& e) {
+    EXPECT_NE(std::string(e.what()).find("served test table"), std::string::npos) << e.what();
+  }
+  std::vector<float> u, rho;
+  EXPECT_THROW(file->read_box(4, {0, 0, 0}, {2, 2, 2}, u, rho), TableError);                // no frame 4
+  EXPECT_THROW(file->read_box(0, {20, 0, 0}, {2, 2, 2}, u, rho), TableError);               // past the grid
+  EXPECT_THROW(WakeTable(WakeTableInfo{}, std::make_unique<FromTable>(file)), TableError);  // no grid, no frames
 }

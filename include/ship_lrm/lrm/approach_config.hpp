@@ -55,6 +55,8 @@ struct ApproachConfig {
 // long enough for table_offset + duration (lbm::ConfigError / wake::TableError otherwise).
 void validate(const ApproachConfig& cfg);
 std::shared_ptr<wake::WakeTable> open_approach_table(const ApproachConfig& cfg);
+// The same checks for a table opened otherwise (served by another process): full scale, long enough.
+void check_approach_table(const ApproachConfig& cfg, const wake::WakeTable& table);
 
 // The table's ship, its motion and the landing spot (ship frame), rebuilt from the table's attributes.
 struct ApproachShip {

@@ -2,7 +2,9 @@
 // interval, in HDF5 (one chunk per frame; float16 or float32) with an XDMF side-car that ParaView
 // opens as a time series. The reader extracts the window around an LRM domain and interpolates
 // trilinearly in space and linearly in time; it holds only that window of two frames in memory, and the
-// next frame's, read ahead on a background thread.
+// next frame's, read ahead on a background thread. Its windows come from the file or, through a
+// WindowSource, from another process (wake_table.cpp: windows and interpolation; wake_table_hdf5.cpp:
+// the file).
 //
 // Layout (format version 1):
 //   /velocity  [frames][nz][ny][nx][3]  m/s, mean frame (ship_motion.hpp), x forward, y starboard, z down
@@ -80,11 +82,28 @@ struct WakeSample {
   float rho;
 };
 
+// Where a table's grid values come from: its HDF5 file, or another process that has the file (the
+// ROS wake server's `wake/window` service). read() may be called from the table's read-ahead thread.
+class WindowSource {
+ public:
+  virtual ~WindowSource() = default;
+  // Frame `frame`'s box [lo, lo + n) of grid points (x, y, z): velocity, 3 per point, and density,
+  // x fastest, into arrays of the box's size. False when it cannot be read (the caller names it).
+  virtual bool read(int frame, const std::array<int, 3>& lo, const std::array<int, 3>& n, float* velocity, float* density) = 0;
+  virtual std::string name() const = 0;  // for messages: the file, or where the windows come from
+};
+
+// Opens an HDF5 table file and validates it (TableError naming what is wrong): its windows, and its
+// attributes in `info`.
+std::unique_ptr<WindowSource> open_table_file(const std::string& path, WakeTableInfo& info);
+
 class WakeTable {
  public:
   // Opens and validates (TableError naming what is wrong). `window_points` bounds the memory: the
   // cached window of two frames (and the frame read ahead) holds at most this many grid points per frame.
   explicit WakeTable(const std::string& path, std::size_t window_points = 4u << 20);
+  // A table whose grid values come from `source` (info as the file's attributes; checked).
+  WakeTable(const WakeTableInfo& info, std::unique_ptr<WindowSource> source, std::size_t window_points = 4u << 20);
   ~WakeTable();
   WakeTable(const WakeTable&) = delete;
   WakeTable& operator=(const WakeTable&) = delete;
@@ -106,12 +125,15 @@ class WakeTable {
   Frames frames(double t, const std::array<double, 3>& lo, const std::array<double, 3>& hi);
   // One frame's grid values (tests, plots): velocity 3 per point and density.
   void read_frame(int frame, std::vector<float>& velocity, std::vector<float>& density) const;
+  // A box [lo, lo + n) of one frame's grid values (the wake server's windows); TableError for a box
+  // outside the grid or a frame that cannot be read.
+  void read_box(int frame, const std::array<int, 3>& lo, const std::array<int, 3>& n, std::vector<float>& velocity,
+                std::vector<float>& density) const;
   std::size_t window_loads() const { return loads_; }                      // hyperslab reads so far (read-ahead included)
   std::size_t window_read_ahead_hits() const { return read_ahead_hits_; }  // of those, read on the background thread in time
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<WindowSource> source_;
   WakeTableInfo info_;
   std::size_t max_points_;
   std::size_t loads_ = 0;
@@ -126,7 +148,7 @@ class WakeTable {
   // Read-ahead: after each sample()/frames() the frame after the later one is read on a background
   // thread into a third window with the same box, so that the next frame change finds it in memory
   // (HDF5 reads and float16 conversion take milliseconds: more than a GPU step). HDF5 calls are
-  // serialised by a process-wide lock.
+  // serialised by a process-wide lock (in the file's source).
   struct ReadAhead;
   std::unique_ptr<ReadAhead> ahead_;
   std::size_t read_ahead_hits_ = 0;
