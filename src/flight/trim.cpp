@@ -155,6 +155,7 @@ TrimResult trim(Helicopter& heli, const TrimTarget& target, const TrimOptions& o
     cur = trial;
   }
   res.residual = cur.residual.norm();
+  if (have_jac) res.jacobian = jac;
   apply(x);
   res.angles = heli.blade_angles();
   res.controls = heli.controls();

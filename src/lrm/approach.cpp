@@ -1,6 +1,7 @@
 // The ship approach of thesis 9.1 (see approach.hpp).
 #include "ship_lrm/lrm/approach.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -111,10 +112,48 @@ void ShipApproach::step() {
   const bool held = !released();
   heli_->set_body_held(held);
   heli_->step();
+  if (cfg_.free_flight && held) trim_controls();
   place(heli_->time(), false, held);
   check_contact();
   wall_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   record();
+}
+
+void ShipApproach::trim_controls() {
+  const auto& p = heli_->parameters();
+  const auto& o = heli_->outputs();
+  const double revolution = 2 * M_PI / p.main_rotor.rotor_speed;
+  // the blades start at zero flap: the trim lets its first evaluation settle this long
+  if (heli_->time() <= (flight::TrimOptions{}.settle_revolutions + 3) * revolution) return;
+  // the trim's residual (flight/trim.cpp): accelerations / g and angular accelerations, revolution means
+  residual_sum_.head<3>() += o.acceleration / p.mass.gravity * heli_->time_step();
+  residual_sum_.tail<3>() += o.angular_acceleration * heli_->time_step();
+  residual_time_ += heli_->time_step();
+  if (residual_time_ < revolution - 0.5 * heli_->time_step()) return;
+  const Eigen::Matrix<double, 6, 1> r = residual_sum_ / residual_time_;
+  residual_sum_.setZero();
+  residual_time_ = 0;
+  // Newton step with the Pitt-Peters trim's Jacobian for the controls against heave, roll, pitch and
+  // yaw (the held attitude cannot answer surge and sway), half of it (the LRM's inflow answers slower
+  // and differently), at most 2 deg per revolution, as the trim limits its steps.
+  const Eigen::Matrix4d j = trim_.jacobian.block<4, 4>(2, 0);
+  const Eigen::Vector4d r4 = r.tail<4>();
+  Eigen::Vector4d dx = -0.5 * j.fullPivLu().solve(r4);
+  if (!dx.allFinite()) return;  // no Jacobian (a trim that converged without one): keep the controls
+  const double lim = dx.cwiseAbs().maxCoeff() / 0.035;
+  if (lim > 1) dx /= lim;
+  flight::BladeAngles a = heli_->blade_angles();
+  a.main.collective += dx[0];
+  a.main.forward += dx[1];
+  a.main.right += dx[2];
+  a.tail += dx[3];
+  heli_->set_blade_angles(a);
+  flight::PilotControls c = heli_->controls();
+  for (double* v : {&c.collective, &c.longitudinal, &c.lateral, &c.pedal}) *v = std::clamp(*v, 0.0, 100.0);
+  heli_->set_controls(c);
+  trim_.controls = heli_->controls();
+  trim_.angles = heli_->blade_angles();
+  last_start_up_residual_ = r;
 }
 
 bool ShipApproach::released() const { return cfg_.free_flight && heli_->time() >= cfg_.startup - 0.5 * heli_->time_step(); }

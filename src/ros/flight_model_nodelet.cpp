@@ -10,8 +10,10 @@
 // step on; the loads of that step are published at once (besides the output_interval grid) and carry
 // the input's stamp (pilot_stamp), so the input-to-loads latency can be measured. The trim's controls
 // go out latched on pilot/trim (the Scenario nodelet centres the stick on them).
-// Free flight (approach/free_flight, fly.launch): the airframe flies from the trimmed start instead of
-// following the path; a run that ends where the skids touch the ship or the sea says so (WARN).
+// Free flight (approach/free_flight, fly.launch): the airframe is held on the path during the start-up,
+// which re-trims the controls for the inflow model (pilot input waits), then flies freely; the
+// trimmed controls go out again on pilot/trim at the release. A run that ends where the skids touch
+// the ship or the sea says so (WARN).
 // Service `trim` (ship_lrm/Trim): the Pitt-Peters trim of this helicopter for a speed and climb angle.
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/WrenchStamped.h>
@@ -160,6 +162,11 @@ class FlightModelNodelet : public nodelet::Nodelet {
   bool take_pilot_input() {
     std::lock_guard<std::mutex> lock(pilot_mutex_);
     if (!pilot_new_) return false;
+    if (cfg_.free_flight && !approach_->released()) {  // the start-up trims the collective; the stick waits
+      pilot_new_ = false;
+      NODELET_INFO_ONCE("FlightModel: pilot input waits for the release at t = %g s (the start-up re-trims the controls)", cfg_.startup);
+      return false;
+    }
     pilot_new_ = false;
     approach_->helicopter().set_controls(pilot_controls_);
     pilot_stamp_ = pilot_msg_stamp_;
@@ -193,6 +200,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
     }
     NODELET_INFO("FlightModel: approach on %s, inflow %s, %g s; trim %.2f %% collective", cfg_.table.c_str(), cfg_.inflow.c_str(),
                  cfg_.duration, approach_->trim().controls.collective);
+    pp_collective_ = approach_->trim().controls.collective;
     publish_trim();
     lrm::WallClockPacer pacer;  // real time: simulated time 0 is due now
     if (realtime_) epoch_ = ros::WallTime::now().toSec();
@@ -210,6 +218,15 @@ class FlightModelNodelet : public nodelet::Nodelet {
       const double t = approach_->time();
       if (!realtime_) publish_clock(t);
       ++steps_;
+      if (cfg_.free_flight && !released_ && approach_->released()) {
+        released_ = true;  // the stick's centre is the trim the start-up has found
+        publish_trim();
+        const flight::PilotControls& c = approach_->trim().controls;
+        NODELET_INFO(
+            "FlightModel: released at t = %.3f s, re-trimmed controls %.2f / %.2f / %.2f / %.2f %% (collective of the Pitt-Peters "
+            "trim %.2f %%)",
+            t, c.collective, c.longitudinal, c.lateral, c.pedal, pp_collective_);
+      }
       publish(false, piloted);
       report_fallback();
       if (realtime_) {
@@ -262,7 +279,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
   void publish_trim() {
     const flight::PilotControls& c = approach_->trim().controls;
     ship_lrm::PilotControls m;
-    m.header.stamp = stamp(0);
+    m.header.stamp = stamp(approach_->time());
     m.collective = c.collective;
     m.longitudinal = c.longitudinal;
     m.lateral = c.lateral;
@@ -425,7 +442,8 @@ class FlightModelNodelet : public nodelet::Nodelet {
 
   lrm::ApproachConfig cfg_;
   flight::HelicopterParameters params_;
-  bool realtime_ = false, reported_lost_ = false;
+  bool realtime_ = false, reported_lost_ = false, released_ = false;
+  double pp_collective_ = 0;
   lrm::RealTimeMode realtime_mode_ = lrm::RealTimeMode::LockStep;
   double epoch_ = 1.0;  // ROS time of simulated time 0 (sim_epoch.hpp)
   std::atomic<long> overruns_{0};

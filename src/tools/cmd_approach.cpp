@@ -74,8 +74,8 @@ std::function<int()> add_approach_command(CLI::App& app) {
                 "lrm: pace to the wall clock; the LRM runs in its own thread and a step whose inflow misses its deadline "
                 "flies on Pitt-Peters (counted; not deterministic)");
   cmd->add_flag("--free-flight", o->cfg.free_flight,
-                "the airframe flies freely (6-DOF) from the path's start, trimmed, with the trim's controls fixed (no pilot): "
-                "the open-loop response; ends where the skids touch the ship or the sea");
+                "held on the path during the start-up (which re-trims the controls for the inflow model), then flying freely "
+                "(6-DOF) with those controls fixed (no pilot): the open-loop response; ends where the skids touch the ship or the sea");
   cmd->add_flag("--pipelined", o->pipelined, "with --realtime: the LRM two LBM intervals behind the flight model (more time per LBM step)");
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;

@@ -183,3 +183,47 @@ TEST(FreeFlight, EndsWhereTheSkidsTouchTheShipOrTheSea) {
     EXPECT_NE(std::string(e.what()).find("landing gear"), std::string::npos) << e.what();
   }
 }
+
+// With the LRM's inflow the Pitt-Peters trim's controls are no trim: the held body would accelerate.
+// The free flight's start-up re-trims the four controls (Newton steps with the Pitt-Peters trim's
+// Jacobian, once per revolution) until the heave, roll, pitch and yaw accelerations are gone, so the
+// release is trimmed but for surge and sway, which only the attitude could balance; the held approach
+// keeps the Pitt-Peters controls and their accelerations.
+TEST(FreeFlight, TheStartUpRetrimsTheControlsToTheLrmsInflow) {
+  const auto params = flight::load_default_bo105();
+  lrm::ApproachConfig c = test::tiny_approach("lrm", 2.0);
+  c.wake = false;
+  c.ship_walls = false;
+  c.startup = 2.0 - 1e-3;
+  c.free_flight = true;
+  lrm::ApproachConfig h = c;
+  h.free_flight = false;
+  lrm::ShipApproach free(c, params), held(h, params);
+  const double revolution = 2 * M_PI / params.main_rotor.rotor_speed, g = params.mass.gravity;
+  using Vec6 = Eigen::Matrix<double, 6, 1>;
+  Vec6 rf = Vec6::Zero(), rh = Vec6::Zero();
+  double n = 0;
+  const auto residual = [&](const lrm::ShipApproach& a) {
+    Vec6 r;
+    r << a.helicopter().outputs().acceleration / g, a.helicopter().outputs().angular_acceleration;
+    return r;
+  };
+  while (!free.released()) {
+    free.step();
+    held.step();
+    if (free.time() > c.startup - revolution) {
+      rf += residual(free);
+      rh += residual(held);
+      ++n;
+    }
+  }
+  rf /= n;
+  rh /= n;
+  // heave, roll and pitch: the held run's (N = 16: -0.041 g, -0.23 and 0.10 rad/s^2) mostly gone
+  // after the eight revolutions the two-second start-up has past the blades' settling; yaw converges
+  // more slowly (docs/design.md)
+  for (int k : {2, 3, 4}) EXPECT_LT(std::abs(rf[k]), 0.2 * std::abs(rh[k])) << k << ": " << rf.transpose() << " held " << rh.transpose();
+  EXPECT_GT(std::abs(rh[3]), 0.1);  // rad/s^2: the Pitt-Peters controls are no trim with the LRM
+  EXPECT_LT(std::abs(rf[5]), std::abs(rh[5]));
+  EXPECT_NE(free.trim().controls.collective, held.trim().controls.collective);
+}

@@ -40,6 +40,10 @@ struct TrimResult {
   double download = 0;                                     // N, vertical fuselage load (positive down)
   Vec3 flapping = Vec3::Zero();                            // coning, forward and right disk tilt, rad
   RigidBodyState body;                                     // trimmed fuselage state
+  // d residual / d (collective, forward, right, tail [rad, blade angles], roll, pitch [rad]) near the
+  // trim (the last Newton-Broyden Jacobian): how the accelerations answer the controls (ShipApproach
+  // uses it to re-trim the controls for another inflow model).
+  Eigen::Matrix<double, 6, 6> jacobian = Eigen::Matrix<double, 6, 6>::Zero();
 };
 
 // Trims `heli` (its parameters, inflow model and engine mode) and leaves it in the trimmed state,

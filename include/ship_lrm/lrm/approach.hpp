@@ -61,6 +61,9 @@ class ShipApproach {
   const RealTimeInflow* realtime_inflow() const { return realtime_; }
   // The duration is over, or (free flight) the landing gear touched the ship or the sea.
   bool done() const;
+  // Free flight: the trim residual (accelerations / g, angular accelerations in rad/s^2; revolution
+  // means) of the start-up's last revolution, as the controls were re-trimmed against it.
+  const Eigen::Matrix<double, 6, 1>& start_up_residual() const { return last_start_up_residual_; }
   // Free flight: whether the airframe flies now (it is held on the path during the start-up).
   bool released() const;
   // Free flight: how the run ended early ("" while it goes on, or when it ran its duration).
@@ -68,6 +71,8 @@ class ShipApproach {
   double time() const { return heli_->time(); }
   double time_step() const { return heli_->time_step(); }
   const ApproachSample& sample() const { return sample_; }
+  // The Pitt-Peters trim of the fixed controls; in free flight, its controls as the start-up has
+  // re-trimmed them for this inflow model (the pilot's stick centre after the release).
   const flight::TrimResult& trim() const { return trim_; }
   const ApproachConfig& config() const { return cfg_; }
   const wake::WakeTableInfo& table_info() const { return table_->info(); }
@@ -98,6 +103,14 @@ class ShipApproach {
   void place(double t, bool start, bool on_path);
   void record();
   void check_contact();  // free flight: ends the run where a landing-gear point touches ship or sea
+  // Free flight, during the start-up: once per rotor revolution, the four controls take a Newton step
+  // (with the Pitt-Peters trim's Jacobian) against the revolution-mean heave, roll, pitch and yaw
+  // accelerations the held body would have with this inflow model (the Pitt-Peters trim's controls are
+  // not a trim with the LRM's inflow), so that the release is trimmed but for surge and sway.
+  void trim_controls();
+  Eigen::Matrix<double, 6, 1> residual_sum_ = Eigen::Matrix<double, 6, 1>::Zero();
+  double residual_time_ = 0;
+  Eigen::Matrix<double, 6, 1> last_start_up_residual_ = Eigen::Matrix<double, 6, 1>::Zero();
   ApproachConfig cfg_;
   std::shared_ptr<wake::WakeTable> table_;
   ApproachShip ship_;

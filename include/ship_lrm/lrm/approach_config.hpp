@@ -45,9 +45,10 @@ struct ApproachConfig {
   bool wake = true;             // the table's wake at the faces; false: its free stream only (thesis appendix VIII)
   double lattice_margin = 1.3;  // lattice reference speed >= margin * (|free stream| + path speed), for the gusts
   // false: the airframe is held on the path (thesis 9.1's whirl tower with a fuselage). true: it is
-  // held there only during the start-up (the blades and the LRM's wake settle), then flies freely
-  // (6-DOF) from where the path had brought it, trimmed; the controls are the caller's (a pilot), and
-  // the run ends early where the landing gear touches the ship or the sea.
+  // held there only during the start-up (the blades and the LRM's wake settle, and the controls are
+  // re-trimmed for this inflow model), then flies freely (6-DOF) from where the path had brought it; the
+  // controls are then the caller's (a pilot), and the run ends early where the landing gear touches
+  // the ship or the sea.
   bool free_flight = false;
 };
 
