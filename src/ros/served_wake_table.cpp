@@ -24,6 +24,11 @@ class ServiceWindowSource final : public wake::WindowSource {
       w.request.n[d] = n[d];
     }
     const std::size_t points = static_cast<std::size_t>(n[0]) * n[1] * n[2];
+    // (at once when the server is up; a server that is starting or restarting gets a few seconds)
+    if (!ros::service::waitForService(service_, ros::Duration(10.0))) {
+      last_error_ = "the service " + service_ + " is not there";
+      return false;
+    }
     if (!ros::service::call(service_, w)) {
       last_error_ = "the service " + service_ + " did not answer";
       return false;

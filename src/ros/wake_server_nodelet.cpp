@@ -47,8 +47,8 @@ class WakeServerNodelet : public nodelet::Nodelet {
     m.origin = to_msg(Vec3(i.origin[0], i.origin[1], i.origin[2]));
     m.spacing = i.spacing;
     for (int k = 0; k < 3; ++k) m.shape[k] = i.shape[k];
+    window_ = nh.advertiseService("wake/window", &WakeServerNodelet::on_window, this);  // before the announcement
     info_.publish(m);
-    window_ = nh.advertiseService("wake/window", &WakeServerNodelet::on_window, this);
     NODELET_INFO("WakeServer: %s: ship %s (%s scale, motion %s), %d frames over %.2f s, free stream %.2f m/s", path_.c_str(),
                  i.ship.c_str(), i.scale.c_str(), i.motion.c_str(), i.frames, i.end_time() - i.start_time, lrm::free_stream(i).norm());
   }
