@@ -86,12 +86,8 @@ DomainPose ShipApproach::domain_pose(const rotor::RotorDiskState& s) const {
 }
 
 void ShipApproach::place(double t, bool start, bool on_path) {
-  const bool flown = !start && !on_path;  // the helicopter is where it flew to
-  const DomainPose pose = flown ? domain_pose(heli_->disk_motion()) : domain_pose(t);
-  flight::RigidBodyState body;
-  body.position = pose.hub - attitude_ * heli_->parameters().main_rotor.hub_position;
-  body.attitude = attitude_;
-  body.velocity = attitude_.conjugate() * pose.hub_velocity;
+  // on the path, or where the helicopter flew to
+  const DomainPose pose = on_path ? domain_pose(t) : domain_pose(heli_->disk_motion());
   if (fluid_ && !realtime_) {
     // (a linked fluid side, and one in the real-time LRM thread, places itself when the next request comes)
     fluid_->place(table_time(t), pose);
@@ -101,9 +97,14 @@ void ShipApproach::place(double t, bool start, bool on_path) {
     table_->sample(table_time(t), hub_xyz_, hub_air_);
     heli_->set_wind(Vec3(hub_air_[0].u[0], hub_air_[0].u[1], hub_air_[0].u[2]));
   }
+  if (!on_path) return;
+  flight::RigidBodyState body;
+  body.position = pose.hub - attitude_ * heli_->parameters().main_rotor.hub_position;
+  body.attitude = attitude_;
+  body.velocity = attitude_.conjugate() * pose.hub_velocity;
   if (start)
     heli_->reset(body);
-  else if (!flown)
+  else
     heli_->set_body(body);
 }
 
@@ -153,7 +154,6 @@ void ShipApproach::trim_controls() {
   heli_->set_controls(c);
   trim_.controls = heli_->controls();
   trim_.angles = heli_->blade_angles();
-  last_start_up_residual_ = r;
 }
 
 bool ShipApproach::released() const { return cfg_.free_flight && heli_->time() >= cfg_.startup - 0.5 * heli_->time_step(); }
@@ -168,14 +168,11 @@ void ShipApproach::check_contact() {
   const double tt = table_time(t);
   for (const Vec3& point : heli_->parameters().landing_gear.contact_points) {
     const Vec3 x = b.position + b.attitude * point;  // mean frame (NED)
-    const bool on_ship = ship_.geometry->signed_distance(ship.to_body(x)) <= 0;
+    const Vec3 on_body = ship.to_body(x);            // ship frame
+    const bool on_ship = ship_.geometry->signed_distance(on_body) <= 0;
     if (!on_ship && x.z() < ship_.geometry->datum().waterline) continue;
     // the point's velocity relative to the surface it touched (the sea is at rest in the mean frame)
-    Vec3 surface = Vec3::Zero();
-    if (on_ship) {
-      const Vec3 centre = ship.to_mean(ship.centre);
-      surface = ship_.motion->centre_velocity(tt) + ship_.motion->omega(tt).cross(x - centre);
-    }
+    const Vec3 surface = on_ship ? ship_.motion->velocity(on_body, tt) : Vec3::Zero();
     const Vec3 v = b.attitude * (b.velocity + b.rate.cross(point)) - surface;
     std::ostringstream m;
     m.precision(3);

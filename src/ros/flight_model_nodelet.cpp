@@ -162,7 +162,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
   bool take_pilot_input() {
     std::lock_guard<std::mutex> lock(pilot_mutex_);
     if (!pilot_new_) return false;
-    if (cfg_.free_flight && !approach_->released()) {  // the start-up trims the collective; the stick waits
+    if (cfg_.free_flight && !approach_->released()) {  // the start-up re-trims the controls; the stick waits
       pilot_new_ = false;
       NODELET_INFO_ONCE("FlightModel: pilot input waits for the release at t = %g s (the start-up re-trims the controls)", cfg_.startup);
       return false;

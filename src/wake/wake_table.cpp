@@ -18,13 +18,18 @@ struct WakeTable::ReadAhead {
 
 WakeTable::WakeTable(const std::string& path, std::size_t window_points) : max_points_(window_points) {
   source_ = open_table_file(path, info_);
+  check_info();
 }
 
 WakeTable::WakeTable(const WakeTableInfo& info, std::unique_ptr<WindowSource> source, std::size_t window_points)
     : source_(std::move(source)), info_(info), max_points_(window_points) {
   if (!source_) throw TableError("wake table: no source of windows");
+  check_info();
+}
+
+void WakeTable::check_info() const {
   if (!(info_.spacing > 0) || !(info_.frame_interval > 0) || info_.shape[0] < 2 || info_.shape[1] < 2 || info_.shape[2] < 2)
-    throw TableError(source_->name() + ": invalid grid or frame interval");
+    throw TableError(source_->name() + ": invalid grid or frame interval attributes");
   if (info_.frames < 1) throw TableError(source_->name() + " holds no frames");
   for (double v : {info_.origin[0], info_.origin[1], info_.origin[2], info_.free_stream[0], info_.free_stream[1], info_.free_stream[2],
                    info_.start_time, info_.free_density})

@@ -338,8 +338,6 @@ std::unique_ptr<WindowSource> open_table_file(const std::string& path, WakeTable
   info.ship = read_attr_string(f, "ship", path);
   info.scale = read_attr_string(f, "scale", path);
   info.motion = read_attr_string(f, "motion", path);
-  if (!(info.spacing > 0) || !(info.frame_interval > 0) || info.shape[0] < 2 || info.shape[1] < 2 || info.shape[2] < 2)
-    throw TableError("wake table '" + path + "': invalid grid or frame interval attributes");
   src->vel = Handle(H5Dopen2(f, "/velocity", H5P_DEFAULT), H5Dclose);
   src->rho = Handle(H5Dopen2(f, "/density", H5P_DEFAULT), H5Dclose);
   if (src->vel < 0 || src->rho < 0) throw TableError("wake table '" + path + "': /velocity or /density is missing");
@@ -354,7 +352,6 @@ std::unique_ptr<WindowSource> open_table_file(const std::string& path, WakeTable
     throw TableError("wake table '" + path + "': dataset sizes do not match the shape attribute");
   const int written = static_cast<int>(read_attr_numbers(f, "frames", 1, path)[0]);
   info.frames = static_cast<int>(std::min<hsize_t>(dv[0], static_cast<hsize_t>(std::max(written, 0))));
-  if (info.frames < 1) throw TableError("wake table '" + path + "' holds no frames");
   Handle type(H5Dget_type(src->vel), H5Tclose);
   info.half_precision = H5Tget_size(type) == 2;
   return src;

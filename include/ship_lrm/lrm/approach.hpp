@@ -61,9 +61,6 @@ class ShipApproach {
   const RealTimeInflow* realtime_inflow() const { return realtime_; }
   // The duration is over, or (free flight) the landing gear touched the ship or the sea.
   bool done() const;
-  // Free flight: the trim residual (accelerations / g, angular accelerations in rad/s^2; revolution
-  // means) of the start-up's last revolution, as the controls were re-trimmed against it.
-  const Eigen::Matrix<double, 6, 1>& start_up_residual() const { return last_start_up_residual_; }
   // Free flight: whether the airframe flies now (it is held on the path during the start-up).
   bool released() const;
   // Free flight: how the run ended early ("" while it goes on, or when it ran its duration).
@@ -98,8 +95,8 @@ class ShipApproach {
   double wall_seconds() const { return wall_seconds_; }
 
  private:
-  // Walls and faces for time t where the helicopter is: on the path (start: reset it there) or, in
-  // free flight after the start-up, where it flew to.
+  // Walls and faces for time t where the helicopter is: on the path (start: reset it there), or where
+  // it flew to (free flight after the start-up: on_path false).
   void place(double t, bool start, bool on_path);
   void record();
   void check_contact();  // free flight: ends the run where a landing-gear point touches ship or sea
@@ -110,7 +107,6 @@ class ShipApproach {
   void trim_controls();
   Eigen::Matrix<double, 6, 1> residual_sum_ = Eigen::Matrix<double, 6, 1>::Zero();
   double residual_time_ = 0;
-  Eigen::Matrix<double, 6, 1> last_start_up_residual_ = Eigen::Matrix<double, 6, 1>::Zero();
   ApproachConfig cfg_;
   std::shared_ptr<wake::WakeTable> table_;
   ApproachShip ship_;

@@ -93,8 +93,8 @@ class WindowSource {
   virtual std::string name() const = 0;  // for messages: the file, or where the windows come from
 };
 
-// Opens an HDF5 table file and validates it (TableError naming what is wrong): its windows, and its
-// attributes in `info`.
+// Opens an HDF5 table file and checks its format (TableError naming what is wrong): its windows, and
+// its attributes in `info` (WakeTable checks those).
 std::unique_ptr<WindowSource> open_table_file(const std::string& path, WakeTableInfo& info);
 
 class WakeTable {
@@ -154,6 +154,7 @@ class WakeTable {
   std::size_t read_ahead_hits_ = 0;
   void read_ahead(int frame, const Window& like);
   bool load(Window& w, int frame, const std::array<int, 3>& a, const std::array<int, 3>& n) const;
+  void check_info() const;  // TableError naming the source for an unusable grid, no frames, non-finite values
 };
 
 }  // namespace ship_lrm::wake
