@@ -53,13 +53,17 @@ class CpuSolver final : public Solver {
       force_.clear();
     } else {
       if (f.size() != 3 * n) throw ConfigError("set_force_field: expected 3 values per cell");
+      for (float x : f)
+        if (!std::isfinite(x)) throw ConfigError("set_force_field: force is not finite");
       force_.resize(3 * n);
       for (std::size_t c = 0; c < n; ++c)
-        for (int a = 0; a < 3; ++a) {
-          if (!std::isfinite(f[3 * c + a])) throw ConfigError("set_force_field: force is not finite");
-          force_[a * n + c] = f[3 * c + a];
-        }
+        for (int a = 0; a < 3; ++a) force_[a * n + c] = f[3 * c + a];
     }
+    const auto& segs = lattice_.bulk_segments();
+    segment_forced_.assign(segs.size(), 0);
+    for (std::size_t s = 0; s < segs.size() && !force_.empty(); ++s)
+      for (std::size_t c = segs[s].first; c < segs[s].first + segs[s].count && !segment_forced_[s]; ++c)
+        segment_forced_[s] = force_[c] != 0.0f || force_[n + c] != 0.0f || force_[2 * n + c] != 0.0f;
     sync_view();
   }
 
@@ -94,6 +98,8 @@ class CpuSolver final : public Solver {
     view_.bnd_value = bnd_value_.data();
     view_.aux = aux_.empty() ? nullptr : aux_.data();
     view_.row_offsets = lattice_.row_offsets().data();
+    view_.bnd_grad_cell = lattice_.boundary_gradient_cells().data();
+    view_.bnd_grad_weight = lattice_.boundary_gradient_weights().data();
   }
 
   void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) override {
@@ -106,7 +112,7 @@ class CpuSolver final : public Solver {
       if (!u.empty())
         for (int a = 0; a < 3; ++a) m.u[a] = u[3 * c + a];
       SHIP_LRM_UNROLL  // constant directions: the LRM re-initialises all cells at every rebuild of its walls
-      for (int i = 0; i < Q; ++i) pop(v, i, c) = store_pop(equilibrium(i, m.rho, m.u));
+          for (int i = 0; i < Q; ++i) pop(v, i, c) = store_pop(equilibrium(i, m.rho, m.u));
       if (v.aux) store_aux(v, c, m);
     }
     for (int b = 0; b < v.nbnd; ++b) initialize_boundary_state(v, b);  // prescribed start state
@@ -131,6 +137,16 @@ class CpuSolver final : public Solver {
     }
   }
 
+  template <bool kOdd, bool kSmagorinsky, int kForce>
+  void update_segment(const Segment& sg, bool store) {
+    store ? update_segment<kOdd, kSmagorinsky, kForce, true>(sg) : update_segment<kOdd, kSmagorinsky, kForce, false>(sg);
+  }
+
+  // Cells without a field force while the field is on (the rotor's force density covers a few per
+  // cent of the LRM's cells at most) take the same update without the field's loads and the Guo
+  // source terms of a zero force: segments (segment_forced_) and boundary blocks that hold none.
+  bool fieldless_uniform() const { return uniform_force_set(view_); }
+
   // Pass 2 of the open boundaries for cells b0 .. b0 + kBoundaryBlock - 1: the neighbour look-ups
   // and the streaming per cell, the arithmetic between them vectorised across the block. The
   // inputs are kept as columns (rho, u, S, F, p): strided or indirect loads would stop GCC from
@@ -140,6 +156,16 @@ class CpuSolver final : public Solver {
   void update_boundary_block(int b0) {
     const LatticeView& v = view_;
     const int n = std::min(kBoundaryBlock, v.nbnd - b0);
+    if (kForce == kForceField) {  // a block without a field force skips it (fieldless_uniform)
+      bool forced = false;
+      for (int k = 0; k < n && !forced; ++k) {
+        const std::size_t c = v.bnd_cell[b0 + k];
+        forced = v.force[c] != 0.0f || v.force[v.ncells + c] != 0.0f || v.force[2 * v.ncells + c] != 0.0f;
+      }
+      if (!forced)
+        return fieldless_uniform() ? update_boundary_block<kOdd, kSmagorinsky, kUniformForce>(b0)
+                                   : update_boundary_block<kOdd, kSmagorinsky, kNoForce>(b0);
+    }
     alignas(64) float X[16][kBoundaryBlock];
     alignas(64) float G[Q][kBoundaryBlock];
     for (int k = 0; k < n; ++k) {
@@ -183,10 +209,13 @@ class CpuSolver final : public Solver {
     {
 #pragma omp for schedule(static) nowait
       for (long s = 0; s < nseg; ++s) {
-        if (store && segs[s].store_state)
-          update_segment<kOdd, kSmagorinsky, kForce, true>(segs[s]);
+        const bool st = store && segs[s].store_state;
+        if (kForce != kForceField || segment_forced_[s])
+          update_segment<kOdd, kSmagorinsky, kForce>(segs[s], st);
+        else if (fieldless_uniform())
+          update_segment<kOdd, kSmagorinsky, kUniformForce>(segs[s], st);
         else
-          update_segment<kOdd, kSmagorinsky, kForce, false>(segs[s]);
+          update_segment<kOdd, kSmagorinsky, kNoForce>(segs[s], st);
       }
 #pragma omp for schedule(static)
       for (long k = 0; k < ng; ++k) update_wall_cell<kOdd>(v, general[k], masks[k]);
@@ -239,8 +268,17 @@ class CpuSolver final : public Solver {
       force_.assign(3 * n, 0.0f);
       sync_view();
     }
-    for (std::size_t k = 0; k < cells.size(); ++k)
+    const auto& segs = lattice_.bulk_segments();
+    if (segment_forced_.size() != segs.size()) segment_forced_.assign(segs.size(), 0);
+    for (std::size_t k = 0; k < cells.size(); ++k) {
       for (int a = 0; a < 3; ++a) force_[a * n + cells[k]] = f[3 * k + a];
+      if (f[3 * k] == 0.0f && f[3 * k + 1] == 0.0f && f[3 * k + 2] == 0.0f) continue;
+      // the segment that holds the cell, if any (segments are in cell order; other cells take the checked path)
+      const auto it = std::upper_bound(segs.begin(), segs.end(), cells[k], [](std::uint32_t c, const Segment& sg) { return c < sg.first; });
+      if (it == segs.begin()) continue;
+      const std::size_t s = static_cast<std::size_t>(it - segs.begin()) - 1;
+      if (cells[k] < segs[s].first + segs[s].count) segment_forced_[s] = 1;
+    }
   }
 
   void do_fields(bool next_odd, Fields& out) override {
@@ -267,6 +305,9 @@ class CpuSolver final : public Solver {
  private:
   PopulationBuffer g_;
   std::vector<float> force_, aux_, bnd_value_;
+  // Per bulk segment: 1 where a cell of it may hold a non-zero field force (set when one is set,
+  // cleared only by set_force_field), so that segments without one skip the field.
+  std::vector<std::uint8_t> segment_forced_;
 };
 
 }  // namespace

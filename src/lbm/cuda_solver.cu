@@ -215,6 +215,8 @@ class CudaSolver final : public Solver {
     bnd_normal_.upload(lattice_.boundary_normals());
     bnd_value_.upload(lattice_.boundary_values());
     bnd_mask_.upload(lattice_.boundary_link_masks());
+    bnd_grad_cell_.upload(lattice_.boundary_gradient_cells());
+    bnd_grad_weight_.upload(lattice_.boundary_gradient_weights());
     row_offsets_.upload(lattice_.row_offsets());
     link_mask_.upload(full_link_masks(lattice_));
     if (!lattice_.boundary_cells().empty()) aux_.resize(4 * n);
@@ -364,6 +366,8 @@ class CudaSolver final : public Solver {
     view_.bnd_value = bnd_value_.data();
     view_.aux = aux_.size() ? aux_.data() : nullptr;
     view_.row_offsets = row_offsets_.data();
+    view_.bnd_grad_cell = bnd_grad_cell_.data();
+    view_.bnd_grad_weight = bnd_grad_weight_.data();
   }
 
   void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) override {
@@ -446,8 +450,8 @@ class CudaSolver final : public Solver {
   DeviceArray<pop_t> g_;
   DeviceArray<std::uint8_t> type_, tag_, bnd_normal_;
   DeviceArray<WallMotion> walls_;
-  DeviceArray<std::uint32_t> bnd_cell_, bnd_mask_;
-  DeviceArray<float> bnd_value_, force_, aux_;
+  DeviceArray<std::uint32_t> bnd_cell_, bnd_mask_, bnd_grad_cell_;
+  DeviceArray<float> bnd_value_, force_, aux_, bnd_grad_weight_;
   DeviceArray<std::int64_t> row_offsets_;
   DeviceArray<std::uint32_t> link_mask_;  // per cell (read by cells off the bulk path only)
   // listed-cell exchange (velocities, cell forces): the cell lists stay on the device while unchanged

@@ -397,12 +397,27 @@ void Lattice::finalize() {
           continue;
         }
         Segment* last = segments_.empty() ? nullptr : &segments_.back();
-        if (last && last->first + last->count == c && last->cell_class == cls && last->link_mask == mask && last->reflection == tag_[c] &&
-            last->store_state == store)
+        if (last && last->first + last->count == c && last->cell_class == cls && last->link_mask == mask && last->reflection == tag_[c]) {
           ++last->count;
-        else
+          last->store_state |= store;
+        } else
           segments_.push_back({static_cast<std::uint32_t>(c), 1, cls, mask, tag_[c], store});
       }
+  // The open boundaries' velocity-gradient stencils, by the function the solvers' kernels share.
+  LatticeView host;
+  for (int a = 0; a < 3; ++a) host.n[a] = n[a];
+  host.ncells = cells();
+  host.type = type_.data();
+  for (int f = 0; f < 6; ++f) host.face[f] = static_cast<std::uint8_t>(cfg_.faces[f].type);
+  const long nb = static_cast<long>(bnd_cell_.size());
+  bnd_grad_cell_.assign(9 * nb, 0);
+  bnd_grad_weight_.assign(9 * nb, 0.0f);
+#pragma omp parallel for schedule(static)
+  for (long b = 0; b < nb; ++b) {
+    int x, y, z;
+    cell_coords(host, bnd_cell_[b], x, y, z);
+    gradient_stencil(host, x, y, z, bnd_cell_[b], &bnd_grad_cell_[9 * b], &bnd_grad_weight_[9 * b]);
+  }
   finalized_ = true;
 }
 

@@ -206,3 +206,96 @@ TEST(OpenBoundaries, ImpedanceOutletRelaxationOutsideItsRangeIsRefused) {
   cfg.faces[1].pressure_relaxation = std::nanf("");
   EXPECT_THROW(Lattice{cfg}, ConfigError);
 }
+
+// The impedance outlet's density (thesis eq. 6.15 with the Zou-He relation rho (1 + u_n) = K), now
+// solved in closed form: the returned rho satisfies the condition
+//   cs^2 (rho - rho_prev) + 1/2 rho du^2 - rho cs du = 0,  du = K / rho - 1 - un_prev,
+// keeps rho_prev when nothing changed (K = (1 + un_prev) rho_prev), and gives the root of small du
+// (the other root has |du| near the speed of sound).
+TEST(OpenBoundaries, ImpedanceDensitySolvesTheImpedanceCondition) {
+  const double cs = std::sqrt(1.0 / 3.0);
+  for (float rho_prev : {0.97f, 1.0f, 1.02f})
+    for (float un : {-0.1f, 0.0f, 0.05f, 0.15f})
+      for (float dK : {-0.02f, -0.001f, 0.0f, 0.003f, 0.03f}) {
+        const float K = (1.0f + un) * rho_prev + dK;
+        const double rho = impedance_density(K, rho_prev, un);
+        const double du = K / rho - 1.0 - un;
+        const double residual = cs * cs * (rho - rho_prev) + 0.5 * rho * du * du - rho * cs * du;
+        // dG/drho is about 1 here, so the residual is the error in rho: a few float32 ulps (1.2e-7)
+        EXPECT_NEAR(residual, 0.0, 1e-6) << rho_prev << " " << un << " " << dK;
+        EXPECT_LT(std::abs(du), 0.1) << rho_prev << " " << un << " " << dK;
+        if (dK == 0.0f) EXPECT_NEAR(rho, rho_prev, 1e-6);
+        // linear acoustics for a small change: rho' = rho cs du, i.e. rho' (cs^2 + cs (1 + un)) = cs dK
+        if (std::abs(dK) <= 0.003f) EXPECT_NEAR(rho - rho_prev, cs * dK / (cs * cs + cs * (1.0 + un)), 3e-5);
+      }
+}
+
+// The velocity-gradient stencils of the open boundaries (Lattice::finalize, gradient_stencil) are
+// exact for a linear velocity field along every axis with a fluid neighbour: central, one-sided of
+// second order, and first order next to walls. A channel with open faces on x and walls on y.
+TEST(OpenBoundaries, GradientStencilsAreExactForLinearFields) {
+  LatticeConfig cfg = periodic_config(12, 9, 7, 0.05f);
+  cfg.faces[0].type = FaceType::VelocityInlet;
+  cfg.faces[1].type = FaceType::ImpedanceOutlet;
+  cfg.faces[4].type = cfg.faces[5].type = FaceType::PressureOutlet;
+  cfg.faces[2].type = cfg.faces[3].type = FaceType::Wall;
+  Lattice lat(cfg);
+  lat.set_wall(0, 4, 3);  // a wall next to the inlet: first-order and one-sided stencils
+  lat.set_wall(1, 5, 3);
+  lat.finalize();
+  const auto& cells = lat.boundary_cells();
+  const auto& k = lat.boundary_gradient_cells();
+  const auto& w = lat.boundary_gradient_weights();
+  ASSERT_EQ(k.size(), 9 * cells.size());
+  const double g[3] = {0.3, -0.7, 1.1};  // du/dx, du/dy, du/dz; periodic z: wrap-around neighbours
+  auto u = [&](std::size_t c, int b) {
+    const int x = static_cast<int>(c % cfg.nx), y = static_cast<int>(c / cfg.nx % cfg.ny), z = static_cast<int>(c / cfg.nx / cfg.ny);
+    const int p[3] = {x, y, z};
+    return g[b] * p[b];
+  };
+  int checked = 0;
+  for (std::size_t b = 0; b < cells.size(); ++b)
+    for (int axis = 0; axis < 3; ++axis) {
+      double d = 0.0, wsum = 0.0, span = 0.0;
+      for (int e = 0; e < 3; ++e) {
+        const std::size_t c = k[9 * b + 3 * axis + e];
+        const double du = u(c, axis) - u(cells[b], axis);
+        d += w[9 * b + 3 * axis + e] * u(c, axis);
+        wsum += w[9 * b + 3 * axis + e];
+        span = std::max(span, std::abs(du));
+      }
+      EXPECT_NEAR(wsum, 0.0, 1e-6);                                 // a constant has no gradient
+      if (span == 0.0 || span > 3.0 * std::abs(g[axis])) continue;  // no neighbour, or across the periodic wrap
+      EXPECT_NEAR(d, g[axis], 1e-5) << "cell " << cells[b] << " axis " << axis;
+      ++checked;
+    }
+  EXPECT_GT(checked, static_cast<int>(cells.size()));
+}
+
+// Listed cell forces (the rotor disk's) reach cells on the vectorised bulk path, which skips the
+// force field where a run of cells holds none: in a periodic box at rest the total momentum grows
+// by the total force per step (Guo forcing conserves momentum exactly), also after the force moves
+// to other cells and after a whole-field set.
+TEST(Forces, ListedCellForcesReachTheBulkPath) {
+  const LatticeConfig cfg = periodic_config(16, 12, 10, 0.05f);
+  auto s = make_cpu_solver(Lattice(cfg));
+  const std::vector<std::uint32_t> a = {static_cast<std::uint32_t>(s->lattice().index(8, 6, 5)),
+                                        static_cast<std::uint32_t>(s->lattice().index(3, 1, 9))};
+  const float F = 1e-5f;
+  s->set_cell_forces(a, {F, 0, 0, F, 0, 0});
+  s->step(10);
+  // fields() reports u with the half-force shift (Guo eq. 20): sum rho u = steps F + F / 2 per forced cell
+  EXPECT_NEAR(momentum(s->fields(), 0), 2 * 10.5 * F, 1e-3 * 2 * 10.5 * F);
+  const std::vector<std::uint32_t> b = {static_cast<std::uint32_t>(s->lattice().index(12, 2, 2))};
+  s->set_cell_forces(a, {0, 0, 0, 0, 0, 0});
+  s->set_cell_forces(b, {0, F, 0});
+  s->step(10);
+  const Fields f = s->fields();
+  EXPECT_NEAR(momentum(f, 0), 2 * 10 * F, 1e-3 * 20 * F);
+  EXPECT_NEAR(momentum(f, 1), 10.5 * F, 1e-3 * 10.5 * F);
+  std::vector<float> field(3 * s->lattice().cells(), 0.0f);
+  field[3 * s->lattice().index(5, 5, 5) + 2] = F;
+  s->set_force_field(field);
+  s->step(4);
+  EXPECT_NEAR(momentum(s->fields(), 2), 4.5 * F, 1e-3 * 4.5 * F);
+}

@@ -194,22 +194,23 @@ SHIP_LRM_HD void reconstruct_fd(float g[Q], float rho, const float u[3], const f
 // the change of density and outward normal velocity over one step must satisfy
 //   cs^2 d(rho) + 1/2 rho d(u_n)^2 - rho cs d(u_n) = 0,
 // i.e. only an outgoing acoustic wave (p' = rho cs u') is admitted, together with the Zou-He
-// relation rho (1 + u_n) = K. Solved for rho by Newton-Raphson; returns rho. In a moving domain the
-// undisturbed flow itself changes; d(u_n) is then taken relative to it (un_prev includes the
-// reference's change), so that only the disturbance radiates and the mean flow keeps its density.
+// relation rho (1 + u_n) = K. With a = 1 + un_prev, rho du_n = K - a rho, so rho times the condition is
+// a quadratic in rho,
+//   (cs^2 + a^2/2 + cs a) rho^2 - (cs^2 rho_prev + K a + cs K) rho + K^2/2 = 0,
+// solved in closed form (one square root instead of Newton iterations). Its roots have the product
+// K^2 / (2 A); when nothing changes (K = a rho_prev) rho_prev is the larger one and the other is about
+// 0.35 rho_prev (|du_n| near the speed of sound), so the larger root is the physical one. In a moving
+// domain the undisturbed flow itself changes; d(u_n) is then taken relative to it (un_prev includes
+// the reference's change), so that only the disturbance radiates and the mean flow keeps its density.
 // rho_prev: the previous density, or, for a partially non-reflecting outlet, that density moved
 // towards the reference by the relaxation (FaceCondition::pressure_relaxation).
 SHIP_LRM_HD float impedance_density(float K, float rho_prev, float un_prev) {
   const float cs = 0.57735026919f;
-  float rho = rho_prev;
-  for (int it = 0; it < 6; ++it) {
-    const float du = K / rho - 1.0f - un_prev;
-    const float ddu = -K / (rho * rho);
-    const float G = d3q19::cs2 * (rho - rho_prev) + 0.5f * rho * du * du - rho * cs * du;
-    const float dG = d3q19::cs2 + 0.5f * du * du + rho * du * ddu - cs * du - rho * cs * ddu;
-    rho -= G / dG;
-  }
-  return rho;
+  const float a = 1.0f + un_prev;
+  const float A = d3q19::cs2 + 0.5f * a * a + cs * a;
+  const float B = d3q19::cs2 * rho_prev + K * a + cs * K;  // minus the linear coefficient
+  const float disc = B * B - 2.0f * A * K * K;
+  return (B + sqrtf(disc > 0.0f ? disc : 0.0f)) / (2.0f * A);
 }
 
 }  // namespace ship_lrm::lbm

@@ -57,8 +57,10 @@ constexpr float kMaxSetupMach = 0.4f;
 // A contiguous run of fluid cells along x with the same cell class (neighbour offsets, see
 // cell_class in lattice_view.hpp), link mask (which neighbours are resting walls or outside) and
 // reflection rule: the CPU backend streams a segment with one table of addresses, vectorised.
-// store_state: the cells are in the open boundaries' support set, so their update also stores
-// their pre-collision state (aux) for the boundary passes.
+// store_state: cells of the open boundaries' support set are among them, so their update also
+// stores their pre-collision state (aux) for the boundary passes (all of the run's cells do: a row
+// stays one long vectorised run instead of splitting into short ones at the support set's edge; the
+// boundary passes read aux of support cells only).
 struct Segment {
   std::uint32_t first;
   std::uint32_t count;
@@ -117,6 +119,9 @@ class Lattice {
   const std::vector<std::uint8_t>& boundary_normals() const { return bnd_normal_; }
   const std::vector<float>& boundary_values() const { return bnd_value_; }  // 4 per boundary cell
   const std::vector<std::uint32_t>& boundary_link_masks() const { return bnd_mask_; }
+  // Velocity-gradient stencils of the boundary cells, 9 cells and 9 weights each (gradient_stencil).
+  const std::vector<std::uint32_t>& boundary_gradient_cells() const { return bnd_grad_cell_; }
+  const std::vector<float>& boundary_gradient_weights() const { return bnd_grad_weight_; }
 
  private:
   void check_cell(int x, int y, int z, const char* what) const;
@@ -132,10 +137,10 @@ class Lattice {
   std::vector<WallMotion> walls_;
   bool finalized_ = false;
   std::vector<Segment> segments_;
-  std::vector<std::uint32_t> general_, general_mask_, bnd_cell_, bnd_mask_;
+  std::vector<std::uint32_t> general_, general_mask_, bnd_cell_, bnd_mask_, bnd_grad_cell_;
   std::vector<std::uint8_t> bnd_normal_;
   std::vector<std::int64_t> row_offsets_;
-  std::vector<float> bnd_value_;
+  std::vector<float> bnd_value_, bnd_grad_weight_;
 };
 
 }  // namespace ship_lrm::lbm

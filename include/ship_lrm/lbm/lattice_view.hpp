@@ -45,6 +45,10 @@ struct LatticeView {
       nullptr;           // 4 * nbnd: inlet velocity (3) | outlet density ([0]) | impedance: reference velocity (3), its normal change ([3])
   float* aux = nullptr;  // state (rho, u) of the open boundaries' support cells, SoA 4 * ncells
   const std::int64_t* row_offsets = nullptr;  // 27 * Q neighbour offsets of bulk cells per cell class
+  // Velocity-gradient stencil of each open-boundary cell (gradient_stencil; Lattice::finalize):
+  // 9 cells and 9 weights per cell, 3 per axis.
+  const std::uint32_t* bnd_grad_cell = nullptr;
+  const float* bnd_grad_weight = nullptr;
 };
 
 // Class of a bulk cell: x, y and z each first (0), interior (1) or last (2); cells on a periodic
@@ -114,10 +118,12 @@ SHIP_LRM_HD Macro cell_state(const LatticeView& v, std::size_t c, const float g[
   if (kForce == kFrameForce) cell_position(v, c, p);
   return collision_state<kForce>(v, p, g, F);
 }
+SHIP_LRM_HD bool uniform_force_set(const LatticeView& v) {
+  return v.uniform_force[0] != 0.0f || v.uniform_force[1] != 0.0f || v.uniform_force[2] != 0.0f;
+}
 SHIP_LRM_HD int force_mode(const LatticeView& v) {
   if (v.frame_active) return kFrameForce;
-  return v.force ? kForceField
-                 : ((v.uniform_force[0] != 0.0f || v.uniform_force[1] != 0.0f || v.uniform_force[2] != 0.0f) ? kUniformForce : kNoForce);
+  return v.force ? kForceField : (uniform_force_set(v) ? kUniformForce : kNoForce);
 }
 // The same with the mode chosen at run time (cells off the vectorised bulk path).
 SHIP_LRM_HD Macro cell_state(const LatticeView& v, std::size_t c, const float g[Q], float F[3]) {
@@ -434,23 +440,46 @@ SHIP_LRM_HD bool support_cell(const LatticeView& v, int x, int y, int z, int axi
   return !is_wall(static_cast<CellType>(v.type[nb] & ~kGeneralBit));
 }
 
-// Velocity gradient du_a/dx_b at cell (x,y,z) from aux by finite differences: central where both
-// neighbours exist, else one-sided of second order where two cells exist, else first order.
-SHIP_LRM_HD void velocity_gradient(const LatticeView& v, int x, int y, int z, std::size_t c, float grad[3][3]) {
+// Finite-difference stencil of the velocity gradient at open-boundary cell c = (x,y,z): along each
+// axis b, du/dx_b = sum_k weight[3b+k] u(cell[3b+k]) over the support cells' states (aux), central
+// where both neighbours exist, else one-sided of second order where two cells exist, else first
+// order, zero where neither neighbour is fluid. Unused entries have weight 0 at c. It depends on
+// the cell types only, so Lattice::finalize computes it once per lattice (bnd_grad_cell).
+SHIP_LRM_HD void gradient_stencil(const LatticeView& v, int x, int y, int z, std::size_t c, std::uint32_t cell[9], float weight[9]) {
   for (int b = 0; b < 3; ++b) {
+    std::uint32_t* k = cell + 3 * b;
+    float* w = weight + 3 * b;
     std::size_t p1 = 0, m1 = 0, p2 = 0, m2 = 0;
     const bool hp1 = support_cell(v, x, y, z, b, 1, p1), hm1 = support_cell(v, x, y, z, b, -1, m1);
-    for (int a = 0; a < 3; ++a) {
-      const float* u = v.aux + (a + 1) * v.ncells;
-      float d = 0.0f;
-      if (hp1 && hm1)
-        d = 0.5f * (u[p1] - u[m1]);
-      else if (hp1)
-        d = support_cell(v, x, y, z, b, 2, p2) ? 0.5f * (-3.0f * u[c] + 4.0f * u[p1] - u[p2]) : u[p1] - u[c];
-      else if (hm1)
-        d = support_cell(v, x, y, z, b, -2, m2) ? 0.5f * (3.0f * u[c] - 4.0f * u[m1] + u[m2]) : u[c] - u[m1];
-      grad[a][b] = d;
+    k[0] = k[1] = k[2] = static_cast<std::uint32_t>(c);
+    w[0] = w[1] = w[2] = 0.0f;
+    if (hp1 && hm1) {
+      k[0] = static_cast<std::uint32_t>(p1), w[0] = 0.5f;
+      k[1] = static_cast<std::uint32_t>(m1), w[1] = -0.5f;
+    } else if (hp1) {
+      k[0] = static_cast<std::uint32_t>(p1);
+      if (support_cell(v, x, y, z, b, 2, p2))
+        w[0] = 2.0f, w[1] = -1.5f, k[2] = static_cast<std::uint32_t>(p2), w[2] = -0.5f;
+      else
+        w[0] = 1.0f, w[1] = -1.0f;
+    } else if (hm1) {
+      k[0] = static_cast<std::uint32_t>(m1);
+      if (support_cell(v, x, y, z, b, -2, m2))
+        w[0] = -2.0f, w[1] = 1.5f, k[2] = static_cast<std::uint32_t>(m2), w[2] = 0.5f;
+      else
+        w[0] = -1.0f, w[1] = 1.0f;
     }
+  }
+}
+
+// Velocity gradient du_a/dx_b at open-boundary cell b from aux through its stencil.
+SHIP_LRM_HD void velocity_gradient(const LatticeView& v, int b, float grad[3][3]) {
+  const std::uint32_t* cell = v.bnd_grad_cell + 9 * b;
+  const float* w = v.bnd_grad_weight + 9 * b;
+  for (int a = 0; a < 3; ++a) {
+    const float* u = v.aux + (a + 1) * v.ncells;
+    for (int d = 0; d < 3; ++d)
+      grad[a][d] = w[3 * d] * u[cell[3 * d]] + w[3 * d + 1] * u[cell[3 * d + 1]] + w[3 * d + 2] * u[cell[3 * d + 2]];
   }
 }
 
@@ -585,11 +614,8 @@ SHIP_LRM_HD void update_boundary_state(const LatticeView& v, int b) {
 
 // Strain rate S = (grad u + grad u^T) / 2 (xx yy zz xy xz yz) at open-boundary cell b.
 SHIP_LRM_HD void boundary_strain(const LatticeView& v, int b, float S[6]) {
-  const std::size_t c = v.bnd_cell[b];
-  int x, y, z;
-  cell_coords(v, c, x, y, z);
   float grad[3][3];
-  velocity_gradient(v, x, y, z, c, grad);
+  velocity_gradient(v, b, grad);
   S[0] = grad[0][0];
   S[1] = grad[1][1];
   S[2] = grad[2][2];
