@@ -63,7 +63,7 @@ class CpuSolver final : public Solver {
     segment_forced_.assign(segs.size(), 0);
     for (std::size_t s = 0; s < segs.size() && !force_.empty(); ++s)
       for (std::size_t c = segs[s].first; c < segs[s].first + segs[s].count && !segment_forced_[s]; ++c)
-        segment_forced_[s] = force_[c] != 0.0f || force_[n + c] != 0.0f || force_[2 * n + c] != 0.0f;
+        segment_forced_[s] = field_force_at(c);
     sync_view();
   }
 
@@ -111,8 +111,9 @@ class CpuSolver final : public Solver {
       if (!rho.empty()) m.rho = rho[c];
       if (!u.empty())
         for (int a = 0; a < 3; ++a) m.u[a] = u[3 * c + a];
-      SHIP_LRM_UNROLL  // constant directions: the LRM re-initialises all cells at every rebuild of its walls
-          for (int i = 0; i < Q; ++i) pop(v, i, c) = store_pop(equilibrium(i, m.rho, m.u));
+      // unrolled (constant directions): the LRM re-initialises all cells at every rebuild of its walls
+      SHIP_LRM_UNROLL
+      for (int i = 0; i < Q; ++i) pop(v, i, c) = store_pop(equilibrium(i, m.rho, m.u));
       if (v.aux) store_aux(v, c, m);
     }
     for (int b = 0; b < v.nbnd; ++b) initialize_boundary_state(v, b);  // prescribed start state
@@ -146,6 +147,10 @@ class CpuSolver final : public Solver {
   // cent of the LRM's cells at most) take the same update without the field's loads and the Guo
   // source terms of a zero force: segments (segment_forced_) and boundary blocks that hold none.
   bool fieldless_uniform() const { return uniform_force_set(view_); }
+  bool field_force_at(std::size_t c) const {
+    const std::size_t n = lattice_.cells();
+    return force_[c] != 0.0f || force_[n + c] != 0.0f || force_[2 * n + c] != 0.0f;
+  }
 
   // Pass 2 of the open boundaries for cells b0 .. b0 + kBoundaryBlock - 1: the neighbour look-ups
   // and the streaming per cell, the arithmetic between them vectorised across the block. The
@@ -158,10 +163,7 @@ class CpuSolver final : public Solver {
     const int n = std::min(kBoundaryBlock, v.nbnd - b0);
     if (kForce == kForceField) {  // a block without a field force skips it (fieldless_uniform)
       bool forced = false;
-      for (int k = 0; k < n && !forced; ++k) {
-        const std::size_t c = v.bnd_cell[b0 + k];
-        forced = v.force[c] != 0.0f || v.force[v.ncells + c] != 0.0f || v.force[2 * v.ncells + c] != 0.0f;
-      }
+      for (int k = 0; k < n && !forced; ++k) forced = field_force_at(v.bnd_cell[b0 + k]);
       if (!forced)
         return fieldless_uniform() ? update_boundary_block<kOdd, kSmagorinsky, kUniformForce>(b0)
                                    : update_boundary_block<kOdd, kSmagorinsky, kNoForce>(b0);
