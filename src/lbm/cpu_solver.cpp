@@ -59,13 +59,11 @@ class CpuSolver final : public Solver {
       for (std::size_t c = 0; c < n; ++c)
         for (int a = 0; a < 3; ++a) force_[a * n + c] = f[3 * c + a];
     }
-    const auto& segs = lattice_.bulk_segments();
-    segment_forced_.assign(segs.size(), 0);
-    for (std::size_t s = 0; s < segs.size() && !force_.empty(); ++s)
-      for (std::size_t c = segs[s].first; c < segs[s].first + segs[s].count && !segment_forced_[s]; ++c)
-        segment_forced_[s] = field_force_at(c);
+    mark_forced_segments();
     sync_view();
   }
+
+  bool in_place_walls() const override { return true; }
 
   void do_set_boundary_values(const std::vector<float>& values) override {
     bnd_value_ = values;
@@ -111,9 +109,7 @@ class CpuSolver final : public Solver {
       if (!rho.empty()) m.rho = rho[c];
       if (!u.empty())
         for (int a = 0; a < 3; ++a) m.u[a] = u[3 * c + a];
-      // unrolled (constant directions): the LRM re-initialises all cells at every rebuild of its walls
-      SHIP_LRM_UNROLL
-      for (int i = 0; i < Q; ++i) pop(v, i, c) = store_pop(equilibrium(i, m.rho, m.u));
+      set_cell_equilibrium<false>(v, c, m);
       if (v.aux) store_aux(v, c, m);
     }
     for (int b = 0; b < v.nbnd; ++b) initialize_boundary_state(v, b);  // prescribed start state
@@ -147,6 +143,13 @@ class CpuSolver final : public Solver {
   // cent of the LRM's cells at most) take the same update without the field's loads and the Guo
   // source terms of a zero force: segments (segment_forced_) and boundary blocks that hold none.
   bool fieldless_uniform() const { return uniform_force_set(view_); }
+  void mark_forced_segments() {
+    const auto& segs = lattice_.bulk_segments();
+    segment_forced_.assign(segs.size(), 0);
+    for (std::size_t s = 0; s < segs.size() && !force_.empty(); ++s)
+      for (std::size_t c = segs[s].first; c < segs[s].first + segs[s].count && !segment_forced_[s]; ++c)
+        segment_forced_[s] = field_force_at(c);
+  }
   bool field_force_at(std::size_t c) const {
     const std::size_t n = lattice_.cells();
     return force_[c] != 0.0f || force_[n + c] != 0.0f || force_[2 * n + c] != 0.0f;
@@ -280,6 +283,22 @@ class CpuSolver final : public Solver {
       if (it == segs.begin()) continue;
       const std::size_t s = static_cast<std::size_t>(it - segs.begin()) - 1;
       if (cells[k] < segs[s].first + segs[s].count) segment_forced_[s] = 1;
+    }
+  }
+
+  Macro do_cell_state(bool next_odd, std::size_t c) override { return next_odd ? macro_at<true>(c) : macro_at<false>(c); }
+
+  void do_change_walls(Lattice&& next, const std::vector<std::uint32_t>& freed, const std::vector<std::array<float, 4>>& states) override {
+    lattice_ = std::move(next);
+    sync_view();
+    mark_forced_segments();
+    const bool odd = steps_ % 2 == 1;
+    for (std::size_t k = 0; k < freed.size(); ++k) {
+      Macro m;
+      m.rho = states[k][0];
+      for (int a = 0; a < 3; ++a) m.u[a] = states[k][1 + a];
+      odd ? set_cell_equilibrium<true>(view_, freed[k], m) : set_cell_equilibrium<false>(view_, freed[k], m);
+      if (view_.aux) store_aux(view_, freed[k], m);
     }
   }
 

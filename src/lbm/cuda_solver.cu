@@ -132,7 +132,7 @@ __global__ void init_kernel(LatticeView v, const float* rho, const float* u) {
   if (rho) m.rho = rho[c];
   if (u)
     for (int a = 0; a < 3; ++a) m.u[a] = u[3 * c + a];
-  for (int i = 0; i < Q; ++i) pop(v, i, c) = store_pop(equilibrium(i, m.rho, m.u));
+  set_cell_equilibrium<false>(v, c, m);
   if (v.aux) store_aux(v, c, m);
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "ship_lrm/lbm/refill.hpp"
+
 namespace ship_lrm::lbm {
 
 Backend parse_backend(const std::string& s) {
@@ -158,6 +160,58 @@ void Solver::step(long n) {
     if (reference_change_pending_) clear_reference_change();  // the impedance outlets took it in this step
     if (interval > 0 && steps_ % interval == 0) check_divergence();
   }
+}
+
+namespace {
+bool same_face(const FaceCondition& a, const FaceCondition& b) {
+  return a.type == b.type && a.velocity == b.velocity && a.density == b.density && a.inflow_from_reference == b.inflow_from_reference &&
+         a.pressure_relaxation == b.pressure_relaxation;
+}
+bool same_setup(const LatticeConfig& a, const LatticeConfig& b) {
+  bool same = a.nx == b.nx && a.ny == b.ny && a.nz == b.nz && a.collision.nu == b.collision.nu &&
+              a.collision.smagorinsky == b.collision.smagorinsky && a.uniform_force == b.uniform_force && a.mach_guard == b.mach_guard &&
+              a.guard_interval == b.guard_interval;
+  for (int f = 0; f < 6 && same; ++f) same = same_face(a.faces[f], b.faces[f]);
+  return same;
+}
+}  // namespace
+
+bool Solver::change_walls(Lattice& next, bool restart_flow) {
+  if (!in_place_walls() || !same_setup(lattice_.config(), next.config()) || next.wall_motions().size() != lattice_.wall_motions().size())
+    return false;
+  next.finalize();
+  const Lattice& was = lattice_;
+  // the open boundaries' state (aux, boundary values) is kept per boundary cell: the same cells
+  if (next.boundary_cells() != was.boundary_cells() || next.boundary_normals() != was.boundary_normals()) return false;
+  std::vector<std::uint32_t> freed;  // cells that leave a wall
+  const auto wall = [](const Lattice& l, std::size_t c) { return is_wall(static_cast<CellType>(l.types()[c] & ~kGeneralBit)); };
+  for (std::size_t c = 0; c < was.cells(); ++c)
+    if (wall(was, c) && !wall(next, c)) freed.push_back(static_cast<std::uint32_t>(c));
+  if (restart_flow) {  // the whole flow at equilibrium with its density and velocity, as a new solver would start
+    const Fields f = carry_flow(was, fields());
+    float speed = 0;
+    const long bad = first_invalid_setup_cell(f.rho, f.u, &speed);
+    if (bad >= 0) {  // the flow itself is beyond the set-up limits: it has diverged (nothing changed)
+      const long nx = was.nx(), ny = was.ny();
+      throw DivergenceError(steps_, static_cast<int>(bad % nx), static_cast<int>((bad / nx) % ny), static_cast<int>(bad / (nx * ny)), speed,
+                            max_setup_speed());
+    }
+    do_change_walls(std::move(next), {}, {});
+    initialize(f.rho, f.u);
+    return true;
+  }
+  const bool odd = steps_ % 2 == 1;
+  const auto states = refill_states(was, freed, [&](std::size_t c) {
+    const Macro m = do_cell_state(odd, c);
+    return std::array<float, 4>{m.rho, m.u[0], m.u[1], m.u[2]};
+  });
+  do_change_walls(std::move(next), freed, states);
+  return true;
+}
+
+Macro Solver::do_cell_state(bool, std::size_t) { throw ConfigError(std::string(backend_name()) + ": no in-place wall change"); }
+void Solver::do_change_walls(Lattice&&, const std::vector<std::uint32_t>&, const std::vector<std::array<float, 4>>&) {
+  throw ConfigError(std::string(backend_name()) + ": no in-place wall change");
 }
 
 Fields Solver::fields() {

@@ -101,7 +101,7 @@ void LrmDomain::update_walls() {
   }
   std::vector<bool> clear(walls_.size());
   for (size_t w = 0; w < walls_.size(); ++w) clear[w] = walls_[w]->clear_of_faces();
-  const int lo = 2, hi = edge_ - 3;  // the two outermost layers on every side
+  const int lo = kClearLayers, hi = edge_ - 1 - kClearLayers;  // the two outermost layers on every side
   // Blocks of kB^3 cells: a wall whose distance at the block's centre exceeds the distance to the
   // block's farthest cell centre misses (or, below minus that, fills) the whole block, since a signed
   // distance changes by at most the distance moved (WallSurface). Only blocks a surface passes
@@ -141,11 +141,14 @@ void LrmDomain::update_walls() {
       throw lbm::ConfigError("LRM: the " + walls_[owner[disk_cells_[k]]]->name() +
                              " covers part of the rotor disk; move the rotor clear of it");
   const bool same = owner == owner_ && moves == wall_moves_;
+  bool near_faces = false;  // a wall cell changed in the layers next to those kept clear
+  for (std::size_t c = 0; c < owner.size() && !same && !near_faces; ++c)
+    near_faces = owner[c] != owner_[c] && face_layer(c) <= kClearLayers + 1;
   owner_ = std::move(owner);
   wall_moves_ = std::move(moves);
   wall_cells_ = count;
   if (!same) {
-    rebuild(true);
+    rebuild(true, near_faces);
     ++rebuilds_;
   }
   push_wall_motions();  // the motions themselves change without a rebuild
@@ -162,7 +165,13 @@ void LrmDomain::update_wall_motions() {
   push_wall_motions();
 }
 
-void LrmDomain::rebuild(bool carry_flow) {
+int LrmDomain::face_layer(std::size_t c) const {
+  const int i = static_cast<int>(c % edge_), j = static_cast<int>((c / edge_) % edge_);
+  const int k = static_cast<int>(c / (static_cast<std::size_t>(edge_) * edge_));
+  return std::min({i, j, k, edge_ - 1 - i, edge_ - 1 - j, edge_ - 1 - k});
+}
+
+void LrmDomain::rebuild(bool carry_flow, bool near_faces) {
   lbm::Lattice lat = make_lattice(cfg_, units_, edge_);
   std::vector<int> slot(walls_.size(), -1);
   for (size_t w = 0; w < walls_.size(); ++w)
@@ -177,6 +186,12 @@ void LrmDomain::rebuild(bool carry_flow) {
         else
           lat.set_wall(i, j, k);
       }
+  // In place where the backend can (the CPU): the forces, faces and frame motion stay with the
+  // solver, and the flow keeps its history unless wall cells changed next to the layers kept clear
+  // of walls. There the flow restarts at equilibrium, as a new solver does (design.md, "Walls that
+  // move"): left with its history, the fluid between a hull and the faces grows a jet until the
+  // approach diverges. Otherwise (CUDA, or walls through a face) a new solver.
+  if (carry_flow && solver_ && solver_->change_walls(lat, near_faces)) return;
   lbm::Fields carried;
   if (carry_flow && solver_) carried = lbm::carry_flow(solver_->lattice(), solver_->fields());
   const std::vector<float>& rho = carried.rho;

@@ -137,9 +137,13 @@ void ShipWakeDomain::rebuild(double t, bool carry) {
         if (o == kShip && moving) lat.set_moving_wall(i, j, k, hull);
         ship_cells_ += o == kShip;
       }
+  if (carry) ++rebuilds_;
+  if (carry && solver_ && solver_->change_walls(lat)) {  // in place (the CPU): the flow keeps its history
+    owner_ = std::move(owner);
+    return;
+  }
   lbm::Fields carried;
   if (carry && solver_) carried = lbm::carry_flow(solver_->lattice(), solver_->fields());
-  if (carry) ++rebuilds_;
   solver_ = lbm::make_solver(std::move(lat), cfg_.backend);
   owner_ = std::move(owner);
   if (!carried.rho.empty()) {

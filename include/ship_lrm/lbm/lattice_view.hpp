@@ -270,6 +270,15 @@ SHIP_LRM_HD void scatter(const LatticeView& v, int x, int y, int z, std::size_t 
   }
 }
 
+// Cell c at equilibrium with state m between steps (kOdd: parity of the next step): the slots that
+// step reads as the cell's pre-collision populations (even) or as its post-collision ones, reversed
+// (odd; see gather and scatter). A start from rest, and a cell that has just left a moving body.
+template <bool kOdd>
+SHIP_LRM_HD void set_cell_equilibrium(const LatticeView& v, std::size_t c, const Macro& m) {
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) pop(v, kOdd ? d3q19::opp(i) : i, c) = store_pop(equilibrium(i, m.rho, m.u));
+}
+
 SHIP_LRM_HD Macro load_aux(const LatticeView& v, std::size_t c) {
   Macro m;
   m.rho = v.aux[c];

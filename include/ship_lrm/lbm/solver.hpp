@@ -105,6 +105,22 @@ class Solver {
   // layout depends on the step parity, so the step count comes back with them. Impedance outlets
   // restart from their reference flow. Throws ConfigError for a wrong size or non-finite values.
   void restore(long steps, const std::vector<float>& g);
+  // New wall cells without a restart (a moving body re-voxelised): `next` describes this lattice
+  // (same size, faces, collision, number of wall motions and open-boundary cells) with other wall
+  // cells; the open-boundary cells' links and gradient stencils may change with them. Fluid cells that stay fluid keep their
+  // populations, non-equilibrium part included; from the next step on, links to cells that became
+  // walls bounce back and links to cells that left a wall stream. A cell that left a wall starts at
+  // equilibrium with the state refill_states gives it (refill.hpp); force densities, wall motions
+  // (next's), boundary values and the step count stay. On success `next` is taken (moved from) and
+  // true returned; false, with nothing changed and `next` kept (finalized), when it differs in more
+  // than its walls or the backend cannot (in_place_walls()): then make a new solver on it, carrying
+  // the flow over with carry_flow. Solver construction, the start state and every non-wall cell's
+  // history are what a rebuild costs and loses (about 10 ms and the stresses at 40^3 on 2 cores).
+  // restart_flow: then every cell restarts at equilibrium with its density and velocity (the cells
+  // that left a wall with the refill's), and the step count at 0: what a new solver started with
+  // carry_flow's fields would do, without making one (see LrmDomain::rebuild).
+  bool change_walls(Lattice& next, bool restart_flow = false);
+  virtual bool in_place_walls() const { return false; }
   // Wait for queued device work (timing); no-op on the CPU.
   virtual void synchronize() {}
 
@@ -129,6 +145,10 @@ class Solver {
   // Listed cells only (validated): velocities out, force densities in; no whole-field traffic.
   virtual void do_velocities(bool next_odd, const std::vector<std::uint32_t>& cells, std::vector<float>& out) = 0;
   virtual void do_set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f) = 0;
+  // change_walls, after the checks: the state (rho, u) of a fluid cell between steps, and adopting
+  // `next` with the listed cells (those that left a wall) started at equilibrium with `states`.
+  virtual Macro do_cell_state(bool next_odd, std::size_t c);
+  virtual void do_change_walls(Lattice&& next, const std::vector<std::uint32_t>& freed, const std::vector<std::array<float, 4>>& states);
   // Index of the first cell whose speed is non-finite or above limit, or -1.
   virtual long long do_find_divergent(bool next_odd, float limit) = 0;
 

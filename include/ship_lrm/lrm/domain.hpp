@@ -120,8 +120,10 @@ class LrmDomain {
   // (halfway bounce-back), moving with the body (Ladd's moving-wall term). The solid continues
   // through the outer layers to the faces. Issue 4 asked to keep walls out of the two outermost
   // layers, but the fluid left there under a ground plane is a dead end fed by the faces, and it went
-  // unstable. When the set of wall cells changed, the flow carries over to the new lattice at
-  // equilibrium with each cell's density and velocity. Cells that left a body are refilled with the
+  // unstable. When the set of wall cells changed, the solver takes the new walls in place where it
+  // can (lbm::Solver::change_walls, the CPU): the fluid cells keep their populations. Otherwise (the
+  // CUDA backend, or a wall that crossed a face) a new solver starts from the flow at equilibrium
+  // with each cell's density and velocity. Either way, cells that left a body are refilled with the
   // mean state of their fluid neighbours, the usual refill of moving-boundary LBM (e.g. Lallemand &
   // Luo 2003, J. Comput. Phys. 184, 406). Throws lbm::ConfigError when a body covers a rotor-disk
   // cell; the domain then stays as it was.
@@ -131,7 +133,7 @@ class LrmDomain {
   // without re-voxelising (a wall that starts or stops moving re-voxelises).
   void update_wall_motions();
   std::size_t wall_cells() const { return wall_cells_; }
-  std::size_t rebuilds() const { return rebuilds_; }  // lattice rebuilds after the first (moving walls)
+  std::size_t rebuilds() const { return rebuilds_; }  // changes of the wall cells after the first (moving walls)
   // Aerodynamic force on the blades over azimuth (N, mr axes); the fluid gets the opposite.
   void set_rotor_forces(const rotor::RotorForceHarmonics& h);
   // Advance by whole LBM steps (at least one).
@@ -174,7 +176,10 @@ class LrmDomain {
   std::vector<bool> wall_moves_;     // per wall: built as a moving wall
   std::size_t wall_cells_ = 0, rebuilds_ = 0;
   std::vector<float> disk_forces_;  // lattice force densities of the disk cells (kept across rebuilds)
-  void rebuild(bool carry_flow);
+  // near_faces: wall cells changed within kClearLayers + 1 layers of a face
+  void rebuild(bool carry_flow, bool near_faces = false);
+  static constexpr int kClearLayers = 2;   // walls that clear_of_faces() stay out of layers 0 .. kClearLayers - 1
+  int face_layer(std::size_t cell) const;  // 0 on a face, 1 next to it, ...
   void push_wall_motions();
   lbm::WallMotion lattice_motion(const RigidMotion& m) const;
 };

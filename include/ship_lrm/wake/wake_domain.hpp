@@ -7,7 +7,8 @@
 // Frame: the thesis fixes the grid to the moving ship (ALE). Here the grid stays in the ship's mean
 // frame (moving with its mean speed, not with its heave, roll and pitch), and the hull moves through
 // it as a moving no-slip wall (Ladd's moving bounce-back), re-voxelised when it has moved by a
-// quarter cell, with the refill of lbm::carry_flow. The sea surface, the faces and the table's grid
+// quarter cell: in place on the CPU (lbm::Solver::change_walls), else a new solver with the flow of
+// lbm::carry_flow; cells that left the hull are refilled either way. The sea surface, the faces and the table's grid
 // then never move: a table point is a fixed point of the mean frame, and the wake server needs no
 // ship attitude to look it up (the LRM gets the ship's walls from the ship geometry and motion).
 #pragma once
