@@ -98,6 +98,15 @@ class CpuSolver final : public Solver {
     view_.row_offsets = lattice_.row_offsets().data();
     view_.bnd_grad_cell = lattice_.boundary_gradient_cells().data();
     view_.bnd_grad_weight = lattice_.boundary_gradient_weights().data();
+    view_.held_cell = lattice_.held_cells().data();
+    view_.held_wall = lattice_.held_walls().data();
+  }
+
+  void do_hold(bool next_odd) override {
+    const LatticeView& v = view_;
+    const int n = v.nheld;
+#pragma omp parallel for schedule(static)
+    for (int h = 0; h < n; ++h) next_odd ? hold_cell<false>(v, h) : hold_cell<true>(v, h);
   }
 
   void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) override {

@@ -136,6 +136,13 @@ __global__ void init_kernel(LatticeView v, const float* rho, const float* u) {
   if (v.aux) store_aux(v, c, m);
 }
 
+// The held cells after a step (hold_cell in lattice_view.hpp).
+template <bool kOddDone>
+__global__ void hold_kernel(LatticeView v) {
+  const int h = blockIdx.x * blockDim.x + threadIdx.x;
+  if (h < v.nheld) hold_cell<kOddDone>(v, h);
+}
+
 __global__ void init_boundary_kernel(LatticeView v) {
   const int b = blockIdx.x * blockDim.x + threadIdx.x;
   if (b >= v.nbnd) return;
@@ -217,6 +224,8 @@ class CudaSolver final : public Solver {
     bnd_mask_.upload(lattice_.boundary_link_masks());
     bnd_grad_cell_.upload(lattice_.boundary_gradient_cells());
     bnd_grad_weight_.upload(lattice_.boundary_gradient_weights());
+    held_cell_.upload(lattice_.held_cells());
+    held_wall_.upload(lattice_.held_walls());
     row_offsets_.upload(lattice_.row_offsets());
     link_mask_.upload(full_link_masks(lattice_));
     if (!lattice_.boundary_cells().empty()) aux_.resize(4 * n);
@@ -368,6 +377,8 @@ class CudaSolver final : public Solver {
     view_.row_offsets = row_offsets_.data();
     view_.bnd_grad_cell = bnd_grad_cell_.data();
     view_.bnd_grad_weight = bnd_grad_weight_.data();
+    view_.held_cell = held_cell_.data();
+    view_.held_wall = held_wall_.data();
   }
 
   void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) override {
@@ -410,6 +421,15 @@ class CudaSolver final : public Solver {
     check(cudaGetLastError(), "step launch");
   }
 
+  void do_hold(bool next_odd) override {
+    const unsigned nb = blocks(static_cast<std::size_t>(view_.nheld));
+    if (next_odd)
+      hold_kernel<false><<<nb, kBlock>>>(view_);
+    else
+      hold_kernel<true><<<nb, kBlock>>>(view_);
+    check(cudaGetLastError(), "hold launch");
+  }
+
   void do_fields(bool next_odd, Fields& out) override {
     DeviceArray<float> rho(view_.ncells), u(3 * view_.ncells);
     if (next_odd)
@@ -448,9 +468,9 @@ class CudaSolver final : public Solver {
     return pinned_;
   }
   DeviceArray<pop_t> g_;
-  DeviceArray<std::uint8_t> type_, tag_, bnd_normal_;
+  DeviceArray<std::uint8_t> type_, tag_, bnd_normal_, held_wall_;
   DeviceArray<WallMotion> walls_;
-  DeviceArray<std::uint32_t> bnd_cell_, bnd_mask_, bnd_grad_cell_;
+  DeviceArray<std::uint32_t> bnd_cell_, bnd_mask_, bnd_grad_cell_, held_cell_;
   DeviceArray<float> bnd_value_, force_, aux_, bnd_grad_weight_;
   DeviceArray<std::int64_t> row_offsets_;
   DeviceArray<std::uint32_t> link_mask_;  // per cell (read by cells off the bulk path only)

@@ -255,6 +255,38 @@ void Lattice::set_moving_wall(int x, int y, int z, int wall) {
   tag_[index(x, y, z)] = static_cast<std::uint8_t>(wall);
 }
 
+void Lattice::set_held(int x, int y, int z, int wall) {
+  check_cell(x, y, z, "set_held");
+  if (wall != kHeldAtRest && (wall < 0 || wall >= static_cast<int>(walls_.size()) || wall >= kHeldWallAtRest))
+    throw ConfigError("set_held: unknown wall index (call add_wall_motion first, or pass kHeldAtRest)");
+  held_cell_.push_back(static_cast<std::uint32_t>(index(x, y, z)));
+  held_wall_.push_back(wall == kHeldAtRest ? kHeldWallAtRest : static_cast<std::uint8_t>(wall));
+}
+
+void Lattice::order_held_cells() {
+  std::vector<std::size_t> order(held_cell_.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return held_cell_[a] < held_cell_[b]; });
+  std::vector<std::uint32_t> cells(order.size());
+  std::vector<std::uint8_t> walls(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    cells[k] = held_cell_[order[k]];
+    walls[k] = held_wall_[order[k]];
+    const std::size_t c = cells[k];
+    const char* why = static_cast<CellType>(type_[c]) != CellType::Fluid ? "is not a fluid cell (a wall or an open-boundary cell)"
+                      : (k > 0 && cells[k - 1] == c)                     ? "is held twice"
+                                                                         : nullptr;
+    if (why) {
+      std::ostringstream s;
+      s << "set_held: cell (" << c % cfg_.nx << ", " << (c / cfg_.nx) % cfg_.ny << ", " << c / (static_cast<std::size_t>(cfg_.nx) * cfg_.ny)
+        << ") " << why;
+      throw ConfigError(s.str());
+    }
+  }
+  held_cell_ = std::move(cells);
+  held_wall_ = std::move(walls);
+}
+
 int Lattice::open_normal(int x, int y, int z) const {
   const int p[3] = {x, y, z}, n[3] = {cfg_.nx, cfg_.ny, cfg_.nz};
   const auto t = static_cast<CellType>(type_[index(x, y, z)]);
@@ -344,6 +376,7 @@ static_assert(static_cast<int>(CellType::Wall) == 1 && static_cast<int>(CellType
 
 void Lattice::finalize() {
   if (finalized_) return;
+  order_held_cells();
   const int n[3] = {cfg_.nx, cfg_.ny, cfg_.nz};
   std::unordered_map<std::uint32_t, std::array<float, 4>> values;
   for (const auto& [c, v] : explicit_values_) values[c] = v;

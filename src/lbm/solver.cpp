@@ -45,6 +45,7 @@ Solver::Solver(Lattice lattice) : lattice_(std::move(lattice)) {
   }
   view_.params = cfg.collision;
   view_.nbnd = static_cast<int>(lattice_.boundary_cells().size());
+  view_.nheld = static_cast<int>(lattice_.held_cells().size());
   boundary_values_ = lattice_.boundary_values();
 }
 
@@ -157,6 +158,7 @@ void Solver::step(long n) {
   for (long k = 0; k < n; ++k) {
     do_step(steps_ % 2 == 1);
     ++steps_;
+    if (view_.nheld) do_hold(steps_ % 2 == 1);
     if (reference_change_pending_) clear_reference_change();  // the impedance outlets took it in this step
     if (interval > 0 && steps_ % interval == 0) check_divergence();
   }
@@ -197,6 +199,7 @@ bool Solver::change_walls(Lattice& next, bool restart_flow) {
                             max_setup_speed());
     }
     do_change_walls(std::move(next), {}, {});
+    view_.nheld = static_cast<int>(lattice_.held_cells().size());
     initialize(f.rho, f.u);
     return true;
   }
@@ -206,6 +209,7 @@ bool Solver::change_walls(Lattice& next, bool restart_flow) {
     return std::array<float, 4>{m.rho, m.u[0], m.u[1], m.u[2]};
   });
   do_change_walls(std::move(next), freed, states);
+  view_.nheld = static_cast<int>(lattice_.held_cells().size());
   return true;
 }
 

@@ -67,6 +67,7 @@ LrmDomain::LrmDomain(const LrmConfig& cfg)
     disk_cells_.push_back(
         static_cast<std::uint32_t>(c.i + static_cast<std::size_t>(edge_) * (c.j + static_cast<std::size_t>(edge_) * disk_layer_)));
   owner_.assign(static_cast<std::size_t>(edge_) * edge_ * edge_, -1);
+  inside_ = owner_;
   rebuild(false);
 }
 
@@ -94,7 +95,7 @@ void LrmDomain::add_wall(std::shared_ptr<WallSurface> wall) {
 
 void LrmDomain::update_walls() {
   // voxelise: cell centres inside a body
-  std::vector<std::int16_t> owner(owner_.size(), -1);
+  std::vector<std::int16_t> owner(owner_.size(), -1), inside(owner_.size(), -1);
   std::vector<bool> moves(walls_.size());
   for (size_t w = 0; w < walls_.size(); ++w) {
     moves[w] = walls_[w]->motion().moving();
@@ -126,13 +127,17 @@ void LrmDomain::update_walls() {
           for (int j = j0; j < j1; ++j)
             for (int i = i0; i < i1; ++i) {
               const bool outer = i < lo || j < lo || k < lo || i > hi || j > hi || k > hi;
+              const std::size_t c = i + static_cast<std::size_t>(edge_) * (j + static_cast<std::size_t>(edge_) * k);
               for (size_t w = 0; w < walls_.size(); ++w) {
-                if (state[w] == 1 || (outer && clear[w])) continue;
-                if (state[w] == -1 || walls_[w]->signed_distance(position(i, j, k)) < 0.0) {
-                  owner[i + static_cast<std::size_t>(edge_) * (j + static_cast<std::size_t>(edge_) * k)] = static_cast<std::int16_t>(w);
-                  ++count;
-                  break;
+                if (state[w] == 1 || (state[w] == 0 && walls_[w]->signed_distance(position(i, j, k)) >= 0.0)) continue;
+                if (outer && clear[w]) {  // inside, where no wall may stand: the air moves with the body
+                  if (inside[c] < 0) inside[c] = static_cast<std::int16_t>(w);
+                  continue;
                 }
+                owner[c] = static_cast<std::int16_t>(w);
+                inside[c] = -1;
+                ++count;
+                break;
               }
             }
       }
@@ -140,11 +145,12 @@ void LrmDomain::update_walls() {
     if (owner[disk_cells_[k]] >= 0)
       throw lbm::ConfigError("LRM: the " + walls_[owner[disk_cells_[k]]]->name() +
                              " covers part of the rotor disk; move the rotor clear of it");
-  const bool same = owner == owner_ && moves == wall_moves_;
+  const bool same = owner == owner_ && inside == inside_ && moves == wall_moves_;
   bool near_faces = false;  // a wall cell changed in the layers next to those kept clear
   for (std::size_t c = 0; c < owner.size() && !same && !near_faces; ++c)
     near_faces = owner[c] != owner_[c] && face_layer(c) <= kClearLayers + 1;
   owner_ = std::move(owner);
+  inside_ = std::move(inside);
   wall_moves_ = std::move(moves);
   wall_cells_ = count;
   if (!same) {
@@ -157,6 +163,33 @@ void LrmDomain::update_walls() {
 void LrmDomain::push_wall_motions() {
   for (size_t w = 0, slot = 0; w < walls_.size(); ++w)
     if (wall_moves_[w]) solver_->set_wall_motion(static_cast<int>(slot++), lattice_motion(walls_[w]->motion()));
+  if (!body_faces_.empty() && motion_set_) push_face_values();  // the bodies' velocities at their face cells
+}
+
+bool LrmDomain::find_body_faces() {
+  std::vector<std::pair<std::uint32_t, std::int16_t>> found;
+  const lbm::Lattice& lat = solver_->lattice();
+  const auto& cells = lat.boundary_cells();
+  for (std::size_t k = 0; k < cells.size(); ++k)
+    if (inside_[cells[k]] >= 0 && (lat.types()[cells[k]] & ~lbm::kGeneralBit) != static_cast<std::uint8_t>(lbm::CellType::PressureOutlet))
+      found.emplace_back(static_cast<std::uint32_t>(k), inside_[cells[k]]);
+  const bool changed = found != body_faces_;
+  body_faces_ = std::move(found);
+  return changed;
+}
+
+void LrmDomain::push_face_values() {
+  if (body_faces_.empty()) return solver_->set_boundary_values(face_values_);
+  std::vector<float> values = face_values_;
+  const auto& cells = solver_->lattice().boundary_cells();
+  for (const auto& [k, w] : body_faces_) {
+    const lbm::WallMotion m = wall_moves_[w] ? lattice_motion(walls_[w]->motion()) : lbm::WallMotion{};
+    const std::size_t c = cells[k];
+    const float x = static_cast<float>(c % edge_), y = static_cast<float>((c / edge_) % edge_),
+                z = static_cast<float>(c / (static_cast<std::size_t>(edge_) * edge_));
+    lbm::rigid_velocity(m, x, y, z, &values[4 * k]);
+  }
+  solver_->set_boundary_values(values);
 }
 
 void LrmDomain::update_wall_motions() {
@@ -179,7 +212,12 @@ void LrmDomain::rebuild(bool carry_flow, bool near_faces) {
   for (int k = 0; k < edge_; ++k)
     for (int j = 0; j < edge_; ++j)
       for (int i = 0; i < edge_; ++i) {
-        const int w = owner_[lat.index(i, j, k)];
+        const std::size_t c = lat.index(i, j, k);
+        // inside a body kept clear of the faces: fluid held to the body's motion (face cells: their
+        // values, push_face_values)
+        if (inside_[c] >= 0 && lat.type(i, j, k) == lbm::CellType::Fluid)
+          lat.set_held(i, j, k, slot[inside_[c]] >= 0 ? slot[inside_[c]] : lbm::Lattice::kHeldAtRest);
+        const int w = owner_[c];
         if (w < 0) continue;
         if (slot[w] >= 0)
           lat.set_moving_wall(i, j, k, slot[w]);
@@ -187,11 +225,15 @@ void LrmDomain::rebuild(bool carry_flow, bool near_faces) {
           lat.set_wall(i, j, k);
       }
   // In place where the backend can (the CPU): the forces, faces and frame motion stay with the
-  // solver, and the flow keeps its history unless wall cells changed next to the layers kept clear
-  // of walls. There the flow restarts at equilibrium, as a new solver does (design.md, "Walls that
-  // move"): left with its history, the fluid between a hull and the faces grows a jet until the
-  // approach diverges. Otherwise (CUDA, or walls through a face) a new solver.
-  if (carry_flow && solver_ && solver_->change_walls(lat, near_faces)) return;
+  // solver, and the flow keeps its history (design.md, "Walls that move"). Otherwise (CUDA, or walls
+  // through a face) a new solver.
+  if (carry_flow && solver_ && solver_->change_walls(lat, near_faces)) {
+    if (find_body_faces() && motion_set_) {
+      motion_set_ = false;  // the faces inside a body changed: push the faces again
+      set_motion(motion_);
+    }
+    return;
+  }
   lbm::Fields carried;
   if (carry_flow && solver_) carried = lbm::carry_flow(solver_->lattice(), solver_->fields());
   const std::vector<float>& rho = carried.rho;
@@ -199,6 +241,7 @@ void LrmDomain::rebuild(bool carry_flow, bool near_faces) {
   const std::vector<std::uint32_t> old_boundary = solver_ ? solver_->lattice().boundary_cells() : std::vector<std::uint32_t>{};
   solver_ = lbm::make_solver(std::move(lat), cfg_.backend);
   if (solver_->lattice().boundary_cells() != old_boundary) face_air_stale_ = far_field_stale_ = true;  // walls moved through a face
+  find_body_faces();
   if (!disk_forces_.empty()) solver_->set_cell_forces(disk_cells_, disk_forces_);
   if (motion_set_) {
     motion_set_ = false;  // push the faces and the frame forces to the new solver
@@ -246,7 +289,7 @@ void LrmDomain::set_motion(const Motion& m) {
   if (faces_same && frame_same) return;  // unchanged (the coupled step calls this every step)
   const double to_lattice = units_.dt() / units_.dx();
   const double cs = 1.0 / std::sqrt(3.0);
-  if (!faces_same && grid_ && solver_->feeds_from_grid() && !cfg_.rotor_far_field) {
+  if (!faces_same && grid_ && solver_->feeds_from_grid() && !cfg_.rotor_far_field && body_faces_.empty()) {
     // the field is interpolated where the faces live (one kernel); the Mach limit is checked there
     lbm::GridFeed f = grid_->feed;
     for (int d = 0; d < 3; ++d) f.omega[d] = m.omega[d];
@@ -267,7 +310,8 @@ void LrmDomain::set_motion(const Motion& m) {
       }
       face_air_stale_ = false;
     }
-    std::vector<float> values(4 * cells.size(), 0.0f);
+    std::vector<float>& values = face_values_;
+    values.assign(4 * cells.size(), 0.0f);
     double fastest = 0;
     // every step in a manoeuvre (omega changes) and at each wake-table refresh: on the OpenMP threads
 #pragma omp parallel for schedule(static) reduction(max : fastest)
@@ -289,7 +333,7 @@ void LrmDomain::set_motion(const Motion& m) {
       throw lbm::ConfigError("LRM: a face velocity of " + std::to_string(fastest / to_lattice) + " m/s is beyond the lattice Mach limit " +
                              std::to_string(lbm::kMaxSetupMach) + " at N = " + std::to_string(cfg_.nodes) +
                              " (largest: " + std::to_string(units_.to_physical_velocity(lbm::kMaxSetupMach * cs)) + " m/s)");
-    solver_->set_boundary_values(values);
+    push_face_values();
   }
   if (!frame_same) {
     lbm::FrameMotion f;

@@ -37,6 +37,11 @@ Lattice every_boundary_case() {
   const int w = lat.add_wall_motion(spin);
   for (int x = 24; x < 28; ++x)
     for (int y = 10; y < 14; ++y) lat.set_moving_wall(x, y, 10, w);
+  // held cells: a layer on the spinning plate, moving with it, and a block at rest next to the inlet
+  for (int x = 24; x < 28; ++x)
+    for (int y = 10; y < 14; ++y) lat.set_held(x, y, 11, w);
+  for (int z = 3; z < 7; ++z)
+    for (int y = 3; y < 7; ++y) lat.set_held(1, y, z, Lattice::kHeldAtRest);
   return lat;
 }
 

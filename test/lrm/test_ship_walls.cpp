@@ -54,9 +54,9 @@ namespace {
 // Largest deviation (m/s) from the still air seen from the grid, over every fluid cell, after `steps`
 // LBM steps of a domain whose hub starts `height` m above the landing spot and moves at v, turning at
 // omega, past a NatoGD at rest in still air.
-double disturbance(double height, const Vector3d& v, const Vector3d& omega, int steps, std::size_t* voxelisations) {
+double disturbance(double height, const Vector3d& v, const Vector3d& omega, int steps, std::size_t* voxelisations, int nodes = 16) {
   lrm::LrmConfig cfg;
-  cfg.nodes = 16;
+  cfg.nodes = nodes;
   cfg.reach = 1.25;
   cfg.backend = lbm::Backend::Cpu;
   lrm::LrmDomain domain(cfg);
@@ -108,9 +108,9 @@ double disturbance(double height, const Vector3d& v, const Vector3d& omega, int 
 
 // The stream stays uniform to 0.5 % of the domain's speed (issue 4, acceptance 3), through more than
 // ten re-voxelisations.
-void expect_uniform(double height, const Vector3d& v, const Vector3d& omega) {
+void expect_uniform(double height, const Vector3d& v, const Vector3d& omega, int nodes = 16) {
   std::size_t vox = 0;
-  const double worst = disturbance(height, v, omega, 400, &vox);
+  const double worst = disturbance(height, v, omega, 25 * nodes, &vox, nodes);  // the same 11 m of travel
   EXPECT_GT(vox, 10u);
   EXPECT_LT(worst, 0.005 * v.norm()) << "hub " << height << " m above the deck: largest deviation " << worst << " m/s";
 }
@@ -129,9 +129,19 @@ TEST(ShipInDomain, UniformStreamStaysUniformWhileTheHullCrossesTheFacesAndTheDom
   expect_uniform(9.5, Vector3d(-4.0, 1.0, 0.0), Vector3d(0, 0, 0.03));
 }
 
-// KNOWN DEFECT (docs/benchmarks.md, "Approach"): with the hub 3.5 m above the deck the hull fills the
-// domain's lower half, and the fluid in the gap between hull and faces (dead ends under the hull) is
-// disturbed while the domain moves sideways and turns: 0.062 m/s, 1.5 % of 4.1 m/s. Enabled once fixed.
-TEST(ShipInDomain, DISABLED_UniformStreamStaysUniformWithTheHullFillingTheLowerHalf) {
+// The hull fills the domain's lower half (hub 3.5 m above the deck) and crosses the bottom, front,
+// back and side faces while the domain moves aft and sideways. In the two outermost layers, kept
+// clear of walls, the air inside the hull is held to the hull's motion (lbm::Lattice::set_held):
+// left free, that dead end between hull and faces grew a jet and diverged (25.7 m/s after 800 steps
+// at N = 32). N = 32: at N = 16 the gap is a single cell layer on a 1.5 m grid.
+TEST(ShipInDomain, UniformStreamStaysUniformWithTheHullFillingTheLowerHalf) {
+  expect_uniform(3.5, Vector3d(-4.0, 1.0, 0.0), Vector3d::Zero(), 32);
+}
+
+// KNOWN DEFECT (docs/benchmarks.md, "Approach"): the same while the domain also turns (0.03 rad/s):
+// 0.060 m/s at N = 16 and 0.032 m/s at N = 32 (1.5 % and 0.8 % of 4.1 m/s), no longer in the gap but
+// in the fluid at the stern's corner, whose staircase changes as the grid turns past it; the error
+// halves with the cell size (first order) but is above acceptance 3's 0.5 % at these resolutions.
+TEST(ShipInDomain, DISABLED_UniformStreamStaysUniformWithTheHullFillingTheLowerHalfWhileTheDomainTurns) {
   expect_uniform(3.5, Vector3d(-4.0, 1.0, 0.0), Vector3d(0, 0, 0.03));
 }

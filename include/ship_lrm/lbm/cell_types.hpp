@@ -49,4 +49,15 @@ struct WallMotion {
   float centre[3] = {0, 0, 0};
 };
 
+// u(p) of rigid motion m at point p (cell coordinates).
+SHIP_LRM_HD void rigid_velocity(const WallMotion& m, float px, float py, float pz, float u[3]) {
+  const float r[3] = {px - m.centre[0], py - m.centre[1], pz - m.centre[2]};
+  u[0] = m.v[0] + m.omega[1] * r[2] - m.omega[2] * r[1];
+  u[1] = m.v[1] + m.omega[2] * r[0] - m.omega[0] * r[2];
+  u[2] = m.v[2] + m.omega[0] * r[1] - m.omega[1] * r[0];
+}
+
+// Wall index of a held cell (Lattice::set_held) that is held at rest.
+constexpr std::uint8_t kHeldWallAtRest = 255;
+
 }  // namespace ship_lrm::lbm

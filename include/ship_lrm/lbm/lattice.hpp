@@ -99,6 +99,14 @@ class Lattice {
   void set_velocity_inlet(int x, int y, int z, const std::array<float, 3>& u);
   void set_pressure_outlet(int x, int y, int z, float rho);
   void set_impedance_outlet(int x, int y, int z);
+  // Held fluid cell: fluid inside a solid body where no wall may stand (the LRM keeps walls out of
+  // its two outermost layers, thesis 6.4). After every step its populations are reset to equilibrium
+  // with its own density and the velocity of rigid body `wall` (add_wall_motion) at its centre, or at
+  // rest for kHeldAtRest: the air inside the body moves with it, instead of a free two-cell layer
+  // between the body and the faces (that layer grew a jet until the flow diverged). Only plain fluid
+  // cells (not walls or open-boundary cells; finalize() checks), each at most once.
+  static constexpr int kHeldAtRest = -1;
+  void set_held(int x, int y, int z, int wall);
 
   CellType type(int x, int y, int z) const { return static_cast<CellType>(type_[index(x, y, z)]); }
 
@@ -122,6 +130,9 @@ class Lattice {
   // Velocity-gradient stencils of the boundary cells, 9 cells and 9 weights each (gradient_stencil).
   const std::vector<std::uint32_t>& boundary_gradient_cells() const { return bnd_grad_cell_; }
   const std::vector<float>& boundary_gradient_weights() const { return bnd_grad_weight_; }
+  // Held cells in cell order and the wall index of each (kHeldWallAtRest for kHeldAtRest).
+  const std::vector<std::uint32_t>& held_cells() const { return held_cell_; }
+  const std::vector<std::uint8_t>& held_walls() const { return held_wall_; }
 
  private:
   void check_cell(int x, int y, int z, const char* what) const;
@@ -130,6 +141,7 @@ class Lattice {
   void set_open(int x, int y, int z, CellType t, const std::array<float, 4>& value);
   int open_normal(int x, int y, int z) const;  // outward normal code, or -1 if not on an open-able face
   std::vector<char> support_marks() const;
+  void order_held_cells();  // in cell order, each checked (finalize)
 
   LatticeConfig cfg_;
   std::vector<std::uint8_t> type_, tag_;
@@ -139,6 +151,8 @@ class Lattice {
   std::vector<Segment> segments_;
   std::vector<std::uint32_t> general_, general_mask_, bnd_cell_, bnd_mask_, bnd_grad_cell_;
   std::vector<std::uint8_t> bnd_normal_;
+  std::vector<std::uint32_t> held_cell_;
+  std::vector<std::uint8_t> held_wall_;
   std::vector<std::int64_t> row_offsets_;
   std::vector<float> bnd_value_, bnd_grad_weight_;
 };

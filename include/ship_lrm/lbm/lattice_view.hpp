@@ -49,6 +49,10 @@ struct LatticeView {
   // 9 cells and 9 weights per cell, 3 per axis.
   const std::uint32_t* bnd_grad_cell = nullptr;
   const float* bnd_grad_weight = nullptr;
+  // Held cells (Lattice::set_held), numbered h = 0 .. nheld-1: cell and wall index.
+  int nheld = 0;
+  const std::uint32_t* held_cell = nullptr;
+  const std::uint8_t* held_wall = nullptr;
 };
 
 // Class of a bulk cell: x, y and z each first (0), interior (1) or last (2); cells on a periodic
@@ -156,13 +160,7 @@ SHIP_LRM_HD bool fluid_or_wall(const LatticeView& v, std::size_t nb, int x, int 
   uw[0] = uw[1] = uw[2] = 0.0f;
   const auto t = static_cast<CellType>(v.type[nb] & ~kGeneralBit);
   if (!is_wall(t)) return true;
-  if (t == CellType::MovingWall) {
-    const WallMotion& m = v.walls[v.tag[nb]];
-    const float r[3] = {x + 0.5f * dx - m.centre[0], y + 0.5f * dy - m.centre[1], z + 0.5f * dz - m.centre[2]};
-    uw[0] = m.v[0] + m.omega[1] * r[2] - m.omega[2] * r[1];
-    uw[1] = m.v[1] + m.omega[2] * r[0] - m.omega[0] * r[2];
-    uw[2] = m.v[2] + m.omega[0] * r[1] - m.omega[1] * r[0];
-  }
+  if (t == CellType::MovingWall) rigid_velocity(v.walls[v.tag[nb]], x + 0.5f * dx, y + 0.5f * dy, z + 0.5f * dz, uw);
   return false;
 }
 
@@ -266,6 +264,29 @@ SHIP_LRM_HD void scatter(const LatticeView& v, int x, int y, int z, std::size_t 
     } else {
       const int k = reflect(v, c, i, false);  // comes back into this cell with direction k
       pop(v, k, c) = store_pop(g[i] + wall_term(k, uw));
+    }
+  }
+}
+
+// The post-collision populations cell (x,y,z) emitted in the step just done (its parity kOdd), read
+// back from where scatter<kOdd> stored them, the moving-wall term taken off the reflected ones.
+template <bool kOdd>
+SHIP_LRM_HD void emitted(const LatticeView& v, int x, int y, int z, std::size_t c, float g[Q]) {
+  if (!kOdd) {
+    SHIP_LRM_UNROLL
+    for (int i = 0; i < Q; ++i) g[i] = load_pop(pop(v, d3q19::opp(i), c));
+    return;
+  }
+  g[0] = load_pop(pop(v, 0, c));
+  const std::int64_t* inner = inner_offsets(v, x, y, z);
+  for (int i = 1; i < Q; ++i) {
+    std::size_t nb;
+    float uw[3];
+    if (neighbour_along(v, x, y, z, c, inner, i, +1, nb, uw)) {
+      g[i] = load_pop(pop(v, i, nb));
+    } else {
+      const int k = reflect(v, c, i, false);
+      g[i] = load_pop(pop(v, k, c)) - wall_term(k, uw);
     }
   }
 }
@@ -705,6 +726,30 @@ SHIP_LRM_HD bool cell_diverged(const LatticeView& v, std::size_t c, float limit2
 template <bool kOdd>
 SHIP_LRM_HD Macro cell_macro(const LatticeView& v, std::size_t c) {
   return is_open_boundary(static_cast<CellType>(v.type[c] & ~kGeneralBit)) ? load_aux(v, c) : fluid_macro<kOdd>(v, c);
+}
+
+// Held cell h (Lattice::set_held) after a step of parity kOddDone: the populations it emitted in
+// that step, wherever the step stored them (scatter: its own slots after an even step, its
+// neighbours' after an odd one, wall links reflected with Ladd's term), are replaced by the
+// equilibrium with the same mass and its body's velocity at the cell centre. In the A-A pattern a
+// cell emits twice per pair of steps (its even-step populations, which the odd step streams, and its
+// odd-step ones, stored straight into the neighbours' slots), so everything a held cell sends its
+// neighbours moves with the body, and no mass is made or lost. Only the cell itself writes these
+// slots in a step, so held cells can be processed in any order, in parallel.
+template <bool kOddDone>
+SHIP_LRM_HD void hold_cell(const LatticeView& v, int h) {
+  const std::size_t c = v.held_cell[h];
+  int x, y, z;
+  cell_coords(v, c, x, y, z);
+  float g[Q];
+  emitted<kOddDone>(v, x, y, z, c, g);
+  float rho, j[3], u[3] = {0.0f, 0.0f, 0.0f};
+  moments(g, rho, j);
+  if (v.held_wall[h] != kHeldWallAtRest)
+    rigid_velocity(v.walls[v.held_wall[h]], static_cast<float>(x), static_cast<float>(y), static_cast<float>(z), u);
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) g[i] = equilibrium(i, rho, u);
+  scatter<kOddDone>(v, x, y, z, c, g);
 }
 
 }  // namespace ship_lrm::lbm

@@ -118,9 +118,12 @@ class LrmDomain {
   // Solid bodies (walls.hpp): the ground, a ship deck, the fuselage. Adding one, or update_walls()
   // after one moved, re-voxelises the domain: cells whose centre lies inside become no-slip walls
   // (halfway bounce-back), moving with the body (Ladd's moving-wall term). The solid continues
-  // through the outer layers to the faces. Issue 4 asked to keep walls out of the two outermost
-  // layers, but the fluid left there under a ground plane is a dead end fed by the faces, and it went
-  // unstable. When the set of wall cells changed, the solver takes the new walls in place where it
+  // through the outer layers to the faces, except for bodies that are kept clear of the faces
+  // (WallSurface::clear_of_faces: the ship and the sea, thesis 6.4): in their two outermost layers
+  // the cells inside such a body (the face cells excepted) are held cells (lbm::Lattice::set_held),
+  // fluid that moves with the body, instead of free fluid in a dead end between the body and the
+  // faces, which grew a jet until the flow diverged (design.md, "Walls that move").
+  // When the set of wall cells changed, the solver takes the new walls in place where it
   // can (lbm::Solver::change_walls, the CPU): the fluid cells keep their populations. Otherwise (the
   // CUDA backend, or a wall that crossed a face) a new solver starts from the flow at equilibrium
   // with each cell's density and velocity. Either way, cells that left a body are refilled with the
@@ -173,7 +176,19 @@ class LrmDomain {
   bool motion_set_ = false;
   std::vector<std::shared_ptr<WallSurface>> walls_;
   std::vector<std::int16_t> owner_;  // per cell: index of the wall that holds it, or -1
-  std::vector<bool> wall_moves_;     // per wall: built as a moving wall
+  // per cell of the layers kept clear of walls: index of the body kept clear of the faces it lies in,
+  // or -1. The air there moves with that body: fluid cells are held to its motion (Lattice::set_held),
+  // face cells take its velocity (body_faces_).
+  std::vector<std::int16_t> inside_;
+  // open-boundary cells inside such a body (pressure outlets excepted): boundary index and body; their
+  // values are the body's velocity (push_face_values), so that the faces and the held cells behind
+  // them agree (a velocity face that fed the table's air into held cells that carried the ship's
+  // pumped mass into them: density 2.4 at the front face, design.md "Walls that move")
+  std::vector<std::pair<std::uint32_t, std::int16_t>> body_faces_;
+  std::vector<float> face_values_;  // the faces' values from the air (set_motion's host path), before the bodies'
+  bool find_body_faces();           // body_faces_ for the solver's boundary cells; true if they changed
+  void push_face_values();          // face_values_ with the bodies' velocities at body_faces_, to the solver
+  std::vector<bool> wall_moves_;    // per wall: built as a moving wall
   std::size_t wall_cells_ = 0, rebuilds_ = 0;
   std::vector<float> disk_forces_;  // lattice force densities of the disk cells (kept across rebuilds)
   // near_faces: wall cells changed within kClearLayers + 1 layers of a face
