@@ -235,6 +235,7 @@ std::uint32_t Lattice::link_mask(int x, int y, int z) const {
 int Lattice::add_wall_motion(const WallMotion& m) {
   if (walls_.size() >= 256) throw ConfigError("at most 256 moving walls are supported");
   check_velocity({m.v[0], m.v[1], m.v[2]}, "wall motion");
+  if (!(m.local_density >= 0.0f && m.local_density <= 1.0f)) throw ConfigError("add_wall_motion: local_density must lie in [0, 1]");
   walls_.push_back(m);
   return static_cast<int>(walls_.size()) - 1;
 }
@@ -244,6 +245,7 @@ void Lattice::set_wall_motion(int wall, const WallMotion& m) {
   check_velocity({m.v[0], m.v[1], m.v[2]}, "wall motion");
   for (int a = 0; a < 3; ++a)
     if (!std::isfinite(m.omega[a]) || !std::isfinite(m.centre[a])) throw ConfigError("set_wall_motion: a value is not finite");
+  if (!(m.local_density >= 0.0f && m.local_density <= 1.0f)) throw ConfigError("set_wall_motion: local_density must lie in [0, 1]");
   walls_[wall] = m;
 }
 

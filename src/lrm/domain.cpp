@@ -71,8 +71,13 @@ LrmDomain::LrmDomain(const LrmConfig& cfg)
   rebuild(false);
 }
 
-lbm::WallMotion LrmDomain::lattice_motion(const RigidMotion& m) const {
+lbm::WallMotion LrmDomain::lattice_motion(const WallSurface& wall) const {
+  const RigidMotion& m = wall.motion();
   lbm::WallMotion w;
+  // The bodies kept clear of the faces drain, through their clipped faces, what the faces feed into
+  // the held air in front of them: Ladd's rho_w must be the fluid's density there (design.md, "The
+  // air inside a ship where no wall may stand"). The others keep the reference density.
+  w.local_density = wall.clear_of_faces() ? 1.0f : 0.0f;
   for (int d = 0; d < 3; ++d) {
     w.v[d] = static_cast<float>(m.velocity[d] * units_.dt() / units_.dx());
     w.omega[d] = static_cast<float>(m.omega[d] * units_.dt());
@@ -162,7 +167,7 @@ void LrmDomain::update_walls() {
 
 void LrmDomain::push_wall_motions() {
   for (size_t w = 0, slot = 0; w < walls_.size(); ++w)
-    if (wall_moves_[w]) solver_->set_wall_motion(static_cast<int>(slot++), lattice_motion(walls_[w]->motion()));
+    if (wall_moves_[w]) solver_->set_wall_motion(static_cast<int>(slot++), lattice_motion(*walls_[w]));
   if (!body_faces_.empty() && motion_set_) push_face_values();  // the bodies' velocities at their face cells
 }
 
@@ -183,7 +188,7 @@ void LrmDomain::push_face_values() {
   std::vector<float> values = face_values_;
   const auto& cells = solver_->lattice().boundary_cells();
   for (const auto& [k, w] : body_faces_) {
-    const lbm::WallMotion m = wall_moves_[w] ? lattice_motion(walls_[w]->motion()) : lbm::WallMotion{};
+    const lbm::WallMotion m = wall_moves_[w] ? lattice_motion(*walls_[w]) : lbm::WallMotion{};
     const std::size_t c = cells[k];
     const float x = static_cast<float>(c % edge_), y = static_cast<float>((c / edge_) % edge_),
                 z = static_cast<float>(c / (static_cast<std::size_t>(edge_) * edge_));
@@ -208,7 +213,7 @@ void LrmDomain::rebuild(bool carry_flow, bool near_faces) {
   lbm::Lattice lat = make_lattice(cfg_, units_, edge_);
   std::vector<int> slot(walls_.size(), -1);
   for (size_t w = 0; w < walls_.size(); ++w)
-    if (wall_moves_.size() > w && wall_moves_[w]) slot[w] = lat.add_wall_motion(lattice_motion(walls_[w]->motion()));
+    if (wall_moves_.size() > w && wall_moves_[w]) slot[w] = lat.add_wall_motion(lattice_motion(*walls_[w]));
   for (int k = 0; k < edge_; ++k)
     for (int j = 0; j < edge_; ++j)
       for (int i = 0; i < edge_; ++i) {

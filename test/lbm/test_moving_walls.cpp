@@ -167,5 +167,41 @@ TEST(InPlaceWalls, RefusesAnotherLattice) {
   EXPECT_EQ(solver->steps_done(), 3);
 }
 
+// Ladd's moving-wall term with the fluid's density as rho_w (WallMotion::local_density = 1; Ladd
+// 1994, eq. 3.2): a stream at a density other than the reference passing through a wall that moves
+// with it along its normal (the wall a body's clipped face makes in the LRM's layers kept clear) is
+// a steady state, since the stream's equilibrium reflects exactly (f_eq_i - f_eq_opp(i) =
+// 6 w_i rho c_i.u). With the reference density (0, the default) the wall takes out u_n where the
+// stream brings rho u_n, and the density drifts.
+TEST(InPlaceWalls, WallMovingAlongItsNormalWithAStreamOfAnyDensityLeavesItAsItIs) {
+  const float U = 0.04f, rho0 = 1.05f;
+  auto drift = [&](float local_density) {
+    LatticeConfig cfg = periodic_config(16, 6, 6, 0.02f);
+    Lattice lat(cfg);
+    WallMotion m;
+    m.v[0] = U;
+    m.local_density = local_density;
+    const int wall = lat.add_wall_motion(m);
+    for (int z = 0; z < 6; ++z)
+      for (int y = 0; y < 6; ++y) lat.set_moving_wall(0, y, z, wall);
+    auto solver = make_cpu_solver(std::move(lat));
+    const std::size_t n = solver->lattice().cells();
+    std::vector<float> u(3 * n, 0.0f);
+    for (std::size_t c = 0; c < n; ++c) u[3 * c] = U;
+    solver->initialize(std::vector<float>(n, rho0), u);
+    solver->step(201);  // even and odd steps
+    const Fields f = solver->fields();
+    double worst = 0;
+    for (std::size_t c = 0; c < n; ++c) {
+      if (is_wall(static_cast<CellType>(solver->lattice().types()[c] & ~kGeneralBit))) continue;
+      worst = std::max({worst, std::abs(f.rho[c] - static_cast<double>(rho0)), std::abs(f.u[3 * c] - static_cast<double>(U)),
+                        std::abs(double(f.u[3 * c + 1])), std::abs(double(f.u[3 * c + 2]))});
+    }
+    return worst;
+  };
+  EXPECT_LT(drift(1.0f), 1e-5);
+  EXPECT_GT(drift(0.0f), 1e-3);  // the reference density: (rho - 1) u_n per step and wall cell
+}
+
 }  // namespace
 }  // namespace ship_lrm::lbm

@@ -47,6 +47,11 @@ struct WallMotion {
   float v[3] = {0, 0, 0};
   float omega[3] = {0, 0, 0};
   float centre[3] = {0, 0, 0};
+  // rho_w of the moving-wall term (Ladd 1994, eq. 3.2) = 1 + local_density (rho - 1), rho the
+  // density of the fluid cell at the link: 0 takes the reference density, 1 the fluid's own. The
+  // fluid's own keeps a stream of any density passing through a wall that moves with it along its
+  // normal as it is (with 1, such a wall takes out u_n where the stream brings rho u_n).
+  float local_density = 0.0f;
 };
 
 // u(p) of rigid motion m at point p (cell coordinates).

@@ -156,20 +156,24 @@ SHIP_LRM_HD Macro cell_state(const LatticeView& v, std::size_t c, const float g[
 
 // Is cell nb (the neighbour of (x,y,z) at d) fluid-like? If it is a wall, uw is its velocity at the
 // link's midpoint (zero for a resting wall).
-SHIP_LRM_HD bool fluid_or_wall(const LatticeView& v, std::size_t nb, int x, int y, int z, int dx, int dy, int dz, float uw[3]) {
-  uw[0] = uw[1] = uw[2] = 0.0f;
+SHIP_LRM_HD bool fluid_or_wall(const LatticeView& v, std::size_t nb, int x, int y, int z, int dx, int dy, int dz, float uw[4]) {
+  uw[0] = uw[1] = uw[2] = uw[3] = 0.0f;
   const auto t = static_cast<CellType>(v.type[nb] & ~kGeneralBit);
   if (!is_wall(t)) return true;
-  if (t == CellType::MovingWall) rigid_velocity(v.walls[v.tag[nb]], x + 0.5f * dx, y + 0.5f * dy, z + 0.5f * dz, uw);
+  if (t == CellType::MovingWall) {
+    const WallMotion& m = v.walls[v.tag[nb]];
+    rigid_velocity(m, x + 0.5f * dx, y + 0.5f * dy, z + 0.5f * dz, uw);
+    uw[3] = m.local_density;
+  }
   return false;
 }
 
 // What lies at (x,y,z) + d: a fluid-like cell (returns true and its index nb) or a wall or the
 // outside of a non-periodic face (returns false and the wall velocity uw at the link midpoint).
-SHIP_LRM_HD bool neighbour(const LatticeView& v, int x, int y, int z, int dx, int dy, int dz, std::size_t& nb, float uw[3]) {
+SHIP_LRM_HD bool neighbour(const LatticeView& v, int x, int y, int z, int dx, int dy, int dz, std::size_t& nb, float uw[4]) {
   int p[3] = {x + dx, y + dy, z + dz};
   bool outside = false;
-  uw[0] = uw[1] = uw[2] = 0.0f;
+  uw[0] = uw[1] = uw[2] = uw[3] = 0.0f;
   for (int a = 0; a < 3; ++a) {
     if (p[a] >= 0 && p[a] < v.n[a]) continue;
     const int f = 2 * a + (p[a] >= v.n[a] ? 1 : 0);
@@ -195,7 +199,7 @@ SHIP_LRM_HD const std::int64_t* inner_offsets(const LatticeView& v, int x, int y
 // neighbour() for direction i (+1) or its opposite (-1): through the fixed offsets `inner` of a
 // cell on no face when given (the same answer without the search), else by the search.
 SHIP_LRM_HD bool neighbour_along(const LatticeView& v, int x, int y, int z, std::size_t c, const std::int64_t* inner, int i, int sign,
-                                 std::size_t& nb, float uw[3]) {
+                                 std::size_t& nb, float uw[4]) {
   const int dx = sign * d3q19::cx(i), dy = sign * d3q19::cy(i), dz = sign * d3q19::cz(i);
   if (!inner) return neighbour(v, x, y, z, dx, dy, dz, nb, uw);
   nb = c + inner[sign > 0 ? i : d3q19::opp(i)];
@@ -218,7 +222,8 @@ SHIP_LRM_HD int reflect_by_rule(int mode, int i, bool arriving) {
 }
 SHIP_LRM_HD int reflect(const LatticeView& v, std::size_t c, int i, bool arriving) { return reflect_by_rule(v.tag[c], i, arriving); }
 
-// Moving-wall momentum term for the population arriving with direction d (rho_w = 1).
+// Moving-wall momentum term for the population arriving with direction d, per unit rho_w (the
+// checked gather and scatter multiply it by rho_w, see WallMotion::local_density).
 SHIP_LRM_HD float wall_term(int d, const float uw[3]) {
   return 6.0f * d3q19::w(d) * (d3q19::cx(d) * uw[0] + d3q19::cy(d) * uw[1] + d3q19::cz(d) * uw[2]);
 }
@@ -233,17 +238,29 @@ SHIP_LRM_HD void gather(const LatticeView& v, int x, int y, int z, std::size_t c
   }
   g[0] = load_pop(pop(v, 0, c));
   const std::int64_t* inner = inner_offsets(v, x, y, z);
+  float term[Q], weight[Q], sum = g[0], local = 0.0f;  // sum: 1 + sum = the cell's density with rho_w = 1
   for (int i = 1; i < Q; ++i) {
     std::size_t nb;
-    float uw[3];
+    float uw[4];
+    term[i] = weight[i] = 0.0f;
     if (neighbour_along(v, x, y, z, c, inner, i, -1, nb, uw)) {
       g[i] = load_pop(pop(v, d3q19::opp(i), nb));
     } else {
       // arriving from a wall: the outgoing population k (reflected onto i) stored by the even step
       const int k = reflect(v, c, i, true);
-      g[i] = load_pop(pop(v, d3q19::opp(k), c)) + wall_term(i, uw);
+      g[i] = load_pop(pop(v, d3q19::opp(k), c));
+      term[i] = wall_term(i, uw);
+      weight[i] = uw[3];
+      local += weight[i] * term[i];
+      sum += term[i];
     }
+    sum += g[i];
   }
+  // rho_w = 1 + a (rho - 1) (WallMotion::local_density a), rho the density these populations make:
+  // rho - 1 = sum + (rho - 1) local
+  const float drho = local != 0.0f ? sum / (1.0f - local) : 0.0f;
+  for (int i = 1; i < Q; ++i)
+    if (term[i] != 0.0f) g[i] += (1.0f + weight[i] * drho) * term[i];
 }
 
 // Store post-collision populations of cell (x,y,z) for the step of the given parity.
@@ -255,15 +272,18 @@ SHIP_LRM_HD void scatter(const LatticeView& v, int x, int y, int z, std::size_t 
     return;
   }
   pop(v, 0, c) = store_pop(g[0]);
+  float drho = 0.0f;  // the cell's density - 1 (collision keeps the mass), for rho_w
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) drho += g[i];
   const std::int64_t* inner = inner_offsets(v, x, y, z);
   for (int i = 1; i < Q; ++i) {
     std::size_t nb;
-    float uw[3];
+    float uw[4];
     if (neighbour_along(v, x, y, z, c, inner, i, +1, nb, uw)) {
       pop(v, i, nb) = store_pop(g[i]);
     } else {
       const int k = reflect(v, c, i, false);  // comes back into this cell with direction k
-      pop(v, k, c) = store_pop(g[i] + wall_term(k, uw));
+      pop(v, k, c) = store_pop(g[i] + (1.0f + uw[3] * drho) * wall_term(k, uw));
     }
   }
 }
@@ -279,16 +299,27 @@ SHIP_LRM_HD void emitted(const LatticeView& v, int x, int y, int z, std::size_t 
   }
   g[0] = load_pop(pop(v, 0, c));
   const std::int64_t* inner = inner_offsets(v, x, y, z);
+  float term[Q], weight[Q], sum = g[0], local = 0.0f;
   for (int i = 1; i < Q; ++i) {
     std::size_t nb;
-    float uw[3];
+    float uw[4];
+    term[i] = weight[i] = 0.0f;
     if (neighbour_along(v, x, y, z, c, inner, i, +1, nb, uw)) {
       g[i] = load_pop(pop(v, i, nb));
     } else {
       const int k = reflect(v, c, i, false);
-      g[i] = load_pop(pop(v, k, c)) - wall_term(k, uw);
+      g[i] = load_pop(pop(v, k, c));
+      term[i] = wall_term(k, uw);
+      weight[i] = uw[3];
+      local += weight[i] * term[i];
+      sum -= term[i];
     }
+    sum += g[i];
   }
+  // scatter added (1 + a (rho - 1)) term, rho - 1 the sum of what it emitted: rho - 1 = sum - (rho - 1) local
+  const float drho = local != 0.0f ? sum / (1.0f + local) : 0.0f;
+  for (int i = 1; i < Q; ++i)
+    if (term[i] != 0.0f) g[i] -= (1.0f + weight[i] * drho) * term[i];
 }
 
 // Cell c at equilibrium with state m between steps (kOdd: parity of the next step): the slots that

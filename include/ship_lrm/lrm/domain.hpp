@@ -196,7 +196,7 @@ class LrmDomain {
   static constexpr int kClearLayers = 2;   // walls that clear_of_faces() stay out of layers 0 .. kClearLayers - 1
   int face_layer(std::size_t cell) const;  // 0 on a face, 1 next to it, ...
   void push_wall_motions();
-  lbm::WallMotion lattice_motion(const RigidMotion& m) const;
+  lbm::WallMotion lattice_motion(const WallSurface& wall) const;
 };
 
 }  // namespace ship_lrm::lrm
