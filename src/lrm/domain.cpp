@@ -230,8 +230,10 @@ void LrmDomain::rebuild(bool carry_flow, bool near_faces) {
           lat.set_wall(i, j, k);
       }
   // In place where the backend can (the CPU): the forces, faces and frame motion stay with the
-  // solver, and the flow keeps its history (design.md, "Walls that move"). Otherwise (CUDA, or walls
-  // through a face) a new solver.
+  // solver, and the flow keeps its history unless wall cells changed next to the layers kept clear
+  // of walls; there it restarts at equilibrium, as a new solver does (kept history drifted there even
+  // with the held cells; design.md, "Walls that move"). Otherwise (CUDA, or walls through a face) a
+  // new solver.
   if (carry_flow && solver_ && solver_->change_walls(lat, near_faces)) {
     if (find_body_faces() && motion_set_) {
       motion_set_ = false;  // the faces inside a body changed: push the faces again
