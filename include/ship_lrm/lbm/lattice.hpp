@@ -100,9 +100,9 @@ class Lattice {
   void set_pressure_outlet(int x, int y, int z, float rho);
   void set_impedance_outlet(int x, int y, int z);
   // Held fluid cell: fluid inside a solid body where no wall may stand (the LRM keeps walls out of
-  // its two outermost layers, thesis 6.4). After every step its populations are reset to equilibrium
-  // with its own density and the velocity of rigid body `wall` (add_wall_motion) at its centre, or at
-  // rest for kHeldAtRest: the air inside the body moves with it, instead of a free two-cell layer
+  // its two outermost layers, thesis 6.4). After every step the populations it emitted are replaced
+  // by the equilibrium with their mass and the velocity of rigid body `wall` (add_wall_motion) at its
+  // centre, or at rest for kHeldAtRest (hold_cell): the air inside the body moves with it, not a free layer
   // between the body and the faces (that layer grew a jet until the flow diverged). Only plain fluid
   // cells (not walls or open-boundary cells; finalize() checks), each at most once.
   static constexpr int kHeldAtRest = -1;
