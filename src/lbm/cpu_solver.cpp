@@ -131,15 +131,21 @@ class CpuSolver final : public Solver {
     const LatticeView& v = view_;
     const std::int64_t* off = v.row_offsets + Q * sg.cell_class;
     const std::size_t first = sg.first, last = first + sg.count;
+    // a segment lies in one row (Lattice::finalize): its cells' positions without a division
+    int x0, y0, z0;
+    cell_coords(v, first, x0, y0, z0);
+    const float y = static_cast<float>(y0), z = static_cast<float>(z0);
     if (sg.link_mask == 0) {
 #pragma omp simd
-      for (std::size_t c = first; c < last; ++c) update_bulk_cell<kOdd, kSmagorinsky, kForce, kStoreState>(v, c, off);
+      for (std::size_t c = first; c < last; ++c)
+        update_bulk_cell<kOdd, kSmagorinsky, kForce, kStoreState>(v, c, static_cast<float>(x0 + static_cast<int>(c - first)), y, z, off);
     } else {
       pop_t* src[Q];
       pop_t* dst[Q];
       segment_addresses<kOdd>(v, sg.link_mask, sg.reflection, off, src, dst);
 #pragma omp simd
-      for (std::size_t c = first; c < last; ++c) update_segment_cell<kSmagorinsky, kForce, kStoreState>(v, c, src, dst);
+      for (std::size_t c = first; c < last; ++c)
+        update_segment_cell<kSmagorinsky, kForce, kStoreState>(v, c, static_cast<float>(x0 + static_cast<int>(c - first)), y, z, src, dst);
     }
   }
 

@@ -64,12 +64,13 @@ __global__ void fluid_kernel(LatticeView v, const std::uint32_t* __restrict__ ma
     int x, y, z;
     cell_coords(v, c, x, y, z);
     const std::int64_t* off = v.row_offsets + Q * cell_class(v.n, x, y, z);
+    const float px = static_cast<float>(x), py = static_cast<float>(y), pz = static_cast<float>(z);
     // With open boundaries every fluid cell stores its state (aux): a flag per cell would cost
     // about as much as the 16 bytes (the CPU backend stores only its support cells').
     if (v.aux)
-      update_bulk_cell<kOdd, kSmagorinsky, kForce, true>(v, c, off);
+      update_bulk_cell<kOdd, kSmagorinsky, kForce, true>(v, c, px, py, pz, off);
     else
-      update_bulk_cell<kOdd, kSmagorinsky, kForce, false>(v, c, off);
+      update_bulk_cell<kOdd, kSmagorinsky, kForce, false>(v, c, px, py, pz, off);
   } else if (t == (static_cast<std::uint8_t>(CellType::Fluid) | kGeneralBit)) {
     update_wall_cell<kOdd>(v, c, masks[c]);
   }

@@ -451,8 +451,10 @@ void Lattice::finalize() {
           general_mask_.push_back(mask);
           continue;
         }
+        // A segment stays in one row (x > 0): the solvers count its cells' x from the first one.
         Segment* last = segments_.empty() ? nullptr : &segments_.back();
-        if (last && last->first + last->count == c && last->cell_class == cls && last->link_mask == mask && last->reflection == tag_[c]) {
+        if (last && x > 0 && last->first + last->count == c && last->cell_class == cls && last->link_mask == mask &&
+            last->reflection == tag_[c]) {
           ++last->count;
           last->store_state |= store;
         } else

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -125,6 +126,44 @@ TEST(WakeTable, Float16KeepsHalfPrecisionAndTheWindowBoundsMemory) {
   EXPECT_THROW(
       table.sample(in.start_time, {in.origin[0], in.origin[1], in.origin[2], in.origin[0] + 9, in.origin[1] + 5, in.origin[2] + 3}, got),
       TableError);
+}
+
+// The reader widens binary16 itself (HDF5's soft conversion was slow): every value must come out as
+// HDF5's own conversion gives it, across the half range (subnormals, signed zero, the largest half).
+TEST(WakeTable, Float16IsReadAsHdf5ConvertsIt) {
+  const std::string path = temp("range16.h5");
+  const WakeTableInfo info = grid(true);
+  std::vector<float> u(3 * info.points()), rho(info.points());
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> exponent(-26.0f, 16.0f);
+  for (std::size_t k = 0; k < u.size(); ++k) u[k] = (k % 2 ? -1.0f : 1.0f) * std::exp2(exponent(rng));
+  u[0] = 0.0f, u[1] = -0.0f, u[2] = 65504.0f, u[3] = -65504.0f, u[4] = 6.0e-8f,
+  u[5] = 6.1035156e-05f;  // half: max, min subnormal, min normal
+  for (std::size_t k = 0; k < rho.size(); ++k) rho[k] = 1.0f + 1e-3f * static_cast<float>(k);
+  {
+    WakeTableWriter w(path, info);
+    w.append(u, rho);
+  }
+  std::vector<float> want_u(u.size()), want_rho(rho.size());
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  const hid_t v = H5Dopen2(f, "/velocity", H5P_DEFAULT), r = H5Dopen2(f, "/density", H5P_DEFAULT);
+  ASSERT_GE(H5Dread(v, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, want_u.data()), 0);
+  ASSERT_GE(H5Dread(r, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, want_rho.data()), 0);
+  H5Dclose(v), H5Dclose(r), H5Fclose(f);
+  WakeTable table(path);
+  ASSERT_TRUE(table.info().half_precision);
+  std::vector<float> got_u, got_rho;
+  table.read_frame(0, got_u, got_rho);
+  ASSERT_EQ(got_u.size(), want_u.size());
+  std::size_t differ = 0;
+  for (std::size_t k = 0; k < u.size(); ++k) differ += std::memcmp(&got_u[k], &want_u[k], sizeof(float)) != 0;
+  for (std::size_t k = 0; k < rho.size(); ++k) differ += std::memcmp(&got_rho[k], &want_rho[k], sizeof(float)) != 0;
+  EXPECT_EQ(differ, 0u);
+  EXPECT_EQ(got_u[2], 65504.0f);
+  EXPECT_TRUE(std::signbit(got_u[1]));
+  EXPECT_GT(got_u[4], 0.0f);  // a subnormal half, not flushed to zero
+  EXPECT_LT(got_u[4], 6.1e-5f);
 }
 
 TEST(WakeTable, BadFilesGiveClearErrors) {

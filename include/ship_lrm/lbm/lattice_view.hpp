@@ -125,13 +125,20 @@ SHIP_LRM_HD void cell_position(const LatticeView& v, std::size_t c, float p[3]) 
   p[2] = static_cast<float>(z);
 }
 
-// Force density F on cell c and the state that enters its collision (collision_state).
+// Force density F on cell c at position p and the state that enters its collision
+// (collision_state). The bulk passes know p without dividing the index (a 32-bit integer division
+// per cell does not vectorise on x86 and made a step with the frame's forces twice as slow).
+template <int kForce>
+SHIP_LRM_HD Macro cell_state(const LatticeView& v, std::size_t c, const float p[3], const float g[Q], float F[3]) {
+  base_force<kForce>(v, c, F);
+  return collision_state<kForce>(v, p, g, F);
+}
+// The same with the position looked up (only the frame's forces need it).
 template <int kForce>
 SHIP_LRM_HD Macro cell_state(const LatticeView& v, std::size_t c, const float g[Q], float F[3]) {
-  base_force<kForce>(v, c, F);
   float p[3] = {0.0f, 0.0f, 0.0f};
   if (kForce == kFrameForce) cell_position(v, c, p);
-  return collision_state<kForce>(v, p, g, F);
+  return cell_state<kForce>(v, c, p, g, F);
 }
 SHIP_LRM_HD bool uniform_force_set(const LatticeView& v) {
   return v.uniform_force[0] != 0.0f || v.uniform_force[1] != 0.0f || v.uniform_force[2] != 0.0f;
@@ -345,13 +352,16 @@ SHIP_LRM_HD void store_aux(const LatticeView& v, std::size_t c, const Macro& m) 
 // Bulk cells: all 18 neighbours are fluid-like cells; the neighbour at c_i is c + off[i] (offsets
 // of the cell's class, no checks; the source at -c_i is c + off[opp(i)]). kStoreState: also store
 // the pre-collision state in aux (a support cell of the open boundaries; see update_boundary_state).
+// (x, y, z): the cell's position (cell_position; scalars, as an array in the caller's vectorised
+// loop would be a per-lane array GCC does not vectorise).
 template <bool kOdd, bool kSmagorinsky, int kForce, bool kStoreState = false>
-SHIP_LRM_HD void update_bulk_cell(const LatticeView& v, std::size_t c, const std::int64_t* off) {
+SHIP_LRM_HD void update_bulk_cell(const LatticeView& v, std::size_t c, float x, float y, float z, const std::int64_t* off) {
+  const float p[3] = {x, y, z};
   float g[Q];
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) g[i] = kOdd ? load_pop(pop(v, d3q19::opp(i), c + off[d3q19::opp(i)])) : load_pop(pop(v, i, c));
   float F[3];
-  const Macro m = cell_state<kForce>(v, c, g, F);
+  const Macro m = cell_state<kForce>(v, c, p, g, F);
   if (kStoreState) store_aux(v, c, m);
   relax<kSmagorinsky, kForce != kNoForce>(g, m, F, v.params);
   SHIP_LRM_UNROLL
@@ -382,14 +392,17 @@ SHIP_LRM_HD void segment_addresses(const LatticeView& v, std::uint32_t mask, int
   }
 }
 
-// Update of one cell of a segment (branch-free: the loop over a segment vectorises).
+// Update of one cell of a segment at position (x, y, z) (branch-free: the loop over a segment
+// vectorises).
 template <bool kSmagorinsky, int kForce, bool kStoreState = false>
-SHIP_LRM_HD void update_segment_cell(const LatticeView& v, std::size_t c, pop_t* const src[Q], pop_t* const dst[Q]) {
+SHIP_LRM_HD void update_segment_cell(const LatticeView& v, std::size_t c, float x, float y, float z, pop_t* const src[Q],
+                                     pop_t* const dst[Q]) {
+  const float p[3] = {x, y, z};
   float g[Q];
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) g[i] = load_pop(src[i][c]);
   float F[3];
-  const Macro m = cell_state<kForce>(v, c, g, F);
+  const Macro m = cell_state<kForce>(v, c, p, g, F);
   if (kStoreState) store_aux(v, c, m);
   relax<kSmagorinsky, kForce != kNoForce>(g, m, F, v.params);
   SHIP_LRM_UNROLL
