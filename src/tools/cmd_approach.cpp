@@ -76,7 +76,8 @@ std::function<int()> add_approach_command(CLI::App& app) {
   cmd->add_flag("--free-flight", o->cfg.free_flight,
                 "held on the path during the start-up (which re-trims the controls for the inflow model), then flying freely "
                 "(6-DOF) with those controls fixed (no pilot): the open-loop response; ends where the skids touch the ship or the sea");
-  cmd->add_flag("--pipelined", o->pipelined, "with --realtime: the LRM two LBM intervals behind the flight model (more time per LBM step)");
+  cmd->add_flag("--pipelined", o->pipelined,
+                "with --realtime: the LRM three LBM intervals behind the flight model (more time per LBM step)");
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
     lrm::ApproachConfig cfg = o->cfg;

@@ -63,7 +63,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
                     "pace the run to the wall clock with firm deadlines (LRM in its own thread, Pitt-Peters for late steps): "
                     "counts deadline misses");
   lrm_cmd->add_flag("--pipelined", lo->pipelined,
-                    "with --realtime: the LRM runs two LBM intervals behind the flight model (a job is due two LBM steps "
+                    "with --realtime: the LRM runs three LBM intervals behind the flight model (a job is due three LBM steps "
                     "after its loads were posted) instead of lock-step");
   auto* wake_cmd = bench->add_subcommand("wake", "Serving an LRM domain's faces from a wake table, against the LBM step (issue 5)");
   struct WakeOpts {

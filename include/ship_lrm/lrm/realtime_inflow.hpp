@@ -16,9 +16,11 @@
 //   between, the last on-time LRM inflow serves (as the synchronous model holds its inflow between
 //   LBM steps). Up to kPipelineDepth jobs are under way, one of them in the LRM thread. Each job has
 //   kPipelineDepth LBM intervals of wall time, so a job that must run two LBM steps (the flight steps
-//   do not divide the LBM step, so every so often one does) or one slowed by the machine still makes
-//   it, at the price of an inflow kPipelineDepth LBM intervals older (6.6 ms at N = 32, against the
-//   rotor's inflow time constant of the order of 0.1 s). A job late at its due step is dropped;
+//   do not divide the LBM step, so every so often one does), one that places changed walls, or one
+//   slowed by the machine still makes it, at the price of an inflow kPipelineDepth LBM intervals
+//   older (9.9 ms at N = 32, against the rotor's inflow time constant of the order of 0.1 s; a missed
+//   job's Pitt-Peters steps moved the approach's loads further from the simulated-time run than the
+//   third interval's lag: docs/benchmarks.md). A job late at its due step is dropped;
 //   Pitt-Peters serves until the next job makes its deadline. A busy LRM thread defers the next post.
 // Simulated-time runs (deterministic) use LrmInflow or LinkedInflow directly; this class is for paced runs.
 #pragma once
@@ -46,8 +48,10 @@ struct RealTimeStats {
 
 enum class RealTimeMode { LockStep, Pipelined };
 
-// LBM intervals a pipelined job has between posting and its due step (see above).
-constexpr int kPipelineDepth = 2;
+// LBM intervals a pipelined job has between posting and its due step (see above). 3 since session
+// 19: with 2 the approach on 2 CPU cores missed 2 - 4 % of its deadlines, nearly all while the ship's
+// wall cells changed (about 4 ms per change, on top of a 2 ms step, within 6.6 ms).
+constexpr int kPipelineDepth = 3;
 
 // LBM steps one job of a real-time LRM may run (LrmInflow::set_catch_up_limit): a job that covers more
 // (the LRM had fallen behind the wall clock) drops the older part of its backlog. No more than a
