@@ -55,21 +55,24 @@ std::vector<std::array<float, 4>> refill_states(const Lattice& was, const std::v
   return out;
 }
 
-Fields carry_flow(const Lattice& was, const Fields& old) {
+Fields restart_fields(const Lattice& was, Fields old, const std::vector<std::uint32_t>& freed) {
   const std::size_t n = was.cells();
-  if (old.rho.size() != n || old.u.size() != 3 * n) throw ConfigError("carry_flow: the fields do not match the lattice");
-  Fields out = old;
-  std::vector<std::uint32_t> walls;
-  for (std::size_t c = 0; c < n; ++c)
-    if (is_wall(static_cast<CellType>(was.types()[c] & ~kGeneralBit))) walls.push_back(static_cast<std::uint32_t>(c));
-  const auto states = refill_states(was, walls, [&](std::size_t c) {
+  if (old.rho.size() != n || old.u.size() != 3 * n) throw ConfigError("carrying the flow over: the fields do not match the lattice");
+  const auto states = refill_states(was, freed, [&](std::size_t c) {
     return std::array<float, 4>{old.rho[c], old.u[3 * c], old.u[3 * c + 1], old.u[3 * c + 2]};
   });
-  for (std::size_t k = 0; k < walls.size(); ++k) {
-    out.rho[walls[k]] = states[k][0];
-    for (int d = 0; d < 3; ++d) out.u[3 * walls[k] + d] = states[k][1 + d];
+  for (std::size_t k = 0; k < freed.size(); ++k) {
+    old.rho[freed[k]] = states[k][0];
+    for (int d = 0; d < 3; ++d) old.u[3 * freed[k] + d] = states[k][1 + d];
   }
-  return out;
+  return old;
+}
+
+Fields carry_flow(const Lattice& was, const Fields& old) {
+  std::vector<std::uint32_t> walls;
+  for (std::size_t c = 0; c < was.cells(); ++c)
+    if (is_wall(static_cast<CellType>(was.types()[c] & ~kGeneralBit))) walls.push_back(static_cast<std::uint32_t>(c));
+  return restart_fields(was, old, walls);
 }
 
 }  // namespace ship_lrm::lbm

@@ -190,7 +190,8 @@ bool Solver::change_walls(Lattice& next, bool restart_flow) {
   for (std::size_t c = 0; c < was.cells(); ++c)
     if (wall(was, c) && !wall(next, c)) freed.push_back(static_cast<std::uint32_t>(c));
   if (restart_flow) {  // the whole flow at equilibrium with its density and velocity, as a new solver would start
-    const Fields f = carry_flow(was, fields());
+    // (from restart_fields: the cells that stay walls keep fields()'s rest state, no step reads them)
+    const Fields f = restart_fields(was, fields(), freed);
     float speed = 0;
     const long bad = first_invalid_setup_cell(f.rho, f.u, &speed);
     if (bad >= 0) {  // the flow itself is beyond the set-up limits: it has diverged (nothing changed)

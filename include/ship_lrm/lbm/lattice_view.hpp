@@ -392,17 +392,24 @@ SHIP_LRM_HD void segment_addresses(const LatticeView& v, std::uint32_t mask, int
   }
 }
 
+// Pre-collision populations g, force density F and state of cell c of a segment at position
+// (x, y, z) (update_segment_cell; the CPU solver's field read-out).
+template <int kForce>
+SHIP_LRM_HD Macro segment_cell_state(const LatticeView& v, std::size_t c, float x, float y, float z, pop_t* const src[Q], float g[Q],
+                                     float F[3]) {
+  const float p[3] = {x, y, z};
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) g[i] = load_pop(src[i][c]);
+  return cell_state<kForce>(v, c, p, g, F);
+}
+
 // Update of one cell of a segment at position (x, y, z) (branch-free: the loop over a segment
 // vectorises).
 template <bool kSmagorinsky, int kForce, bool kStoreState = false>
 SHIP_LRM_HD void update_segment_cell(const LatticeView& v, std::size_t c, float x, float y, float z, pop_t* const src[Q],
                                      pop_t* const dst[Q]) {
-  const float p[3] = {x, y, z};
-  float g[Q];
-  SHIP_LRM_UNROLL
-  for (int i = 0; i < Q; ++i) g[i] = load_pop(src[i][c]);
-  float F[3];
-  const Macro m = cell_state<kForce>(v, c, p, g, F);
+  float g[Q], F[3];
+  const Macro m = segment_cell_state<kForce>(v, c, x, y, z, src, g, F);
   if (kStoreState) store_aux(v, c, m);
   relax<kSmagorinsky, kForce != kNoForce>(g, m, F, v.params);
   SHIP_LRM_UNROLL

@@ -23,4 +23,9 @@ std::vector<std::array<float, 4>> refill_states(const Lattice& was, const std::v
 // same size whose walls changed: the cells that were walls in `was` refilled by refill_states.
 Fields carry_flow(const Lattice& was, const Fields& old);
 
+// The same for an in-place restart (Solver::change_walls with restart_flow): only `freed`, the cells
+// that leave a wall, are refilled; the others that stay walls keep old's values, which no step reads.
+// (carry_flow fills every wall cell, front by front through a thick hull: 0.4 ms at 40^3 with the ship.)
+Fields restart_fields(const Lattice& was, Fields old, const std::vector<std::uint32_t>& freed);
+
 }  // namespace ship_lrm::lbm
