@@ -109,8 +109,8 @@ std::string read_attr_string(hid_t obj, const char* name, const std::string& pat
 }
 
 // Reads a dataset's selection as float32. Through HDF5's conversion, except IEEE binary16 on disk
-// (half: raw into `raw`, widened here): HDF5's soft float16 conversion took 2.7 % of an approach's
-// CPU (a window every table frame, read ahead on a thread that takes the LBM threads' cores).
+// (half: raw into `raw`, widened here): HDF5's soft float16 conversion took 2.7 % of a bench-wake
+// run's CPU (a window every table frame, read ahead on a thread that takes the LBM threads' cores).
 bool read_floats(hid_t set, hid_t mem_space, hid_t file_space, bool half, std::vector<std::uint16_t>& raw, float* out) {
   if (!half) return H5Dread(set, H5T_NATIVE_FLOAT, mem_space, file_space, H5P_DEFAULT, out) >= 0;
   const hssize_t n = H5Sget_select_npoints(mem_space);
