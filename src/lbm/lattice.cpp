@@ -232,20 +232,26 @@ std::uint32_t Lattice::link_mask(int x, int y, int z) const {
   return mask;
 }
 
+namespace {
+// A wall motion the solvers can take: velocity within the Mach limit, finite rotation, rho_w weight in [0, 1].
+void check_wall_motion(const WallMotion& m, const std::string& where) {
+  check_velocity({m.v[0], m.v[1], m.v[2]}, "wall motion");
+  for (int a = 0; a < 3; ++a)
+    if (!std::isfinite(m.omega[a]) || !std::isfinite(m.centre[a])) throw ConfigError(where + ": a value is not finite");
+  if (!(m.local_density >= 0.0f && m.local_density <= 1.0f)) throw ConfigError(where + ": local_density must lie in [0, 1]");
+}
+}  // namespace
+
 int Lattice::add_wall_motion(const WallMotion& m) {
   if (walls_.size() >= 256) throw ConfigError("at most 256 moving walls are supported");
-  check_velocity({m.v[0], m.v[1], m.v[2]}, "wall motion");
-  if (!(m.local_density >= 0.0f && m.local_density <= 1.0f)) throw ConfigError("add_wall_motion: local_density must lie in [0, 1]");
+  check_wall_motion(m, "add_wall_motion");
   walls_.push_back(m);
   return static_cast<int>(walls_.size()) - 1;
 }
 
 void Lattice::set_wall_motion(int wall, const WallMotion& m) {
   if (wall < 0 || wall >= static_cast<int>(walls_.size())) throw ConfigError("set_wall_motion: unknown wall index " + std::to_string(wall));
-  check_velocity({m.v[0], m.v[1], m.v[2]}, "wall motion");
-  for (int a = 0; a < 3; ++a)
-    if (!std::isfinite(m.omega[a]) || !std::isfinite(m.centre[a])) throw ConfigError("set_wall_motion: a value is not finite");
-  if (!(m.local_density >= 0.0f && m.local_density <= 1.0f)) throw ConfigError("set_wall_motion: local_density must lie in [0, 1]");
+  check_wall_motion(m, "set_wall_motion");
   walls_[wall] = m;
 }
 

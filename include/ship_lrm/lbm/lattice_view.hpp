@@ -235,6 +235,22 @@ SHIP_LRM_HD float wall_term(int d, const float uw[3]) {
   return 6.0f * d3q19::w(d) * (d3q19::cx(d) * uw[0] + d3q19::cy(d) * uw[1] + d3q19::cz(d) * uw[2]);
 }
 
+// Ladd's moving-wall terms (term[i] per unit rho_w, 0 on links that reach fluid; weight[i] the
+// wall's local_density a) added to populations g (sign +1: gather) or taken off them (sign -1:
+// emitted) with rho_w = 1 + a (rho - 1), rho the density the resulting populations make:
+// rho - 1 = sum(g) + sign sum(term) + sign (rho - 1) sum(a term).
+SHIP_LRM_HD void apply_wall_terms(float g[Q], const float term[Q], const float weight[Q], float sign) {
+  float sum = g[0], local = 0.0f;
+  for (int i = 1; i < Q; ++i) {
+    local += weight[i] * term[i];
+    sum += sign * term[i];
+    sum += g[i];
+  }
+  const float drho = local != 0.0f ? sum / (1.0f - sign * local) : 0.0f;
+  for (int i = 1; i < Q; ++i)
+    if (term[i] != 0.0f) g[i] += sign * ((1.0f + weight[i] * drho) * term[i]);
+}
+
 // Pre-collision populations of cell (x,y,z) for the step of the given parity.
 template <bool kOdd>
 SHIP_LRM_HD void gather(const LatticeView& v, int x, int y, int z, std::size_t c, float g[Q]) {
@@ -245,7 +261,7 @@ SHIP_LRM_HD void gather(const LatticeView& v, int x, int y, int z, std::size_t c
   }
   g[0] = load_pop(pop(v, 0, c));
   const std::int64_t* inner = inner_offsets(v, x, y, z);
-  float term[Q], weight[Q], sum = g[0], local = 0.0f;  // sum: 1 + sum = the cell's density with rho_w = 1
+  float term[Q], weight[Q];
   for (int i = 1; i < Q; ++i) {
     std::size_t nb;
     float uw[4];
@@ -258,16 +274,9 @@ SHIP_LRM_HD void gather(const LatticeView& v, int x, int y, int z, std::size_t c
       g[i] = load_pop(pop(v, d3q19::opp(k), c));
       term[i] = wall_term(i, uw);
       weight[i] = uw[3];
-      local += weight[i] * term[i];
-      sum += term[i];
     }
-    sum += g[i];
   }
-  // rho_w = 1 + a (rho - 1) (WallMotion::local_density a), rho the density these populations make:
-  // rho - 1 = sum + (rho - 1) local
-  const float drho = local != 0.0f ? sum / (1.0f - local) : 0.0f;
-  for (int i = 1; i < Q; ++i)
-    if (term[i] != 0.0f) g[i] += (1.0f + weight[i] * drho) * term[i];
+  apply_wall_terms(g, term, weight, 1.0f);
 }
 
 // Store post-collision populations of cell (x,y,z) for the step of the given parity.
@@ -306,7 +315,7 @@ SHIP_LRM_HD void emitted(const LatticeView& v, int x, int y, int z, std::size_t 
   }
   g[0] = load_pop(pop(v, 0, c));
   const std::int64_t* inner = inner_offsets(v, x, y, z);
-  float term[Q], weight[Q], sum = g[0], local = 0.0f;
+  float term[Q], weight[Q];
   for (int i = 1; i < Q; ++i) {
     std::size_t nb;
     float uw[4];
@@ -318,15 +327,10 @@ SHIP_LRM_HD void emitted(const LatticeView& v, int x, int y, int z, std::size_t 
       g[i] = load_pop(pop(v, k, c));
       term[i] = wall_term(k, uw);
       weight[i] = uw[3];
-      local += weight[i] * term[i];
-      sum -= term[i];
     }
-    sum += g[i];
   }
-  // scatter added (1 + a (rho - 1)) term, rho - 1 the sum of what it emitted: rho - 1 = sum - (rho - 1) local
-  const float drho = local != 0.0f ? sum / (1.0f + local) : 0.0f;
-  for (int i = 1; i < Q; ++i)
-    if (term[i] != 0.0f) g[i] -= (1.0f + weight[i] * drho) * term[i];
+  // scatter added (1 + a (rho - 1)) term, rho - 1 the sum of what it emitted
+  apply_wall_terms(g, term, weight, -1.0f);
 }
 
 // Cell c at equilibrium with state m between steps (kOdd: parity of the next step): the slots that
