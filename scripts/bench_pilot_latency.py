@@ -4,8 +4,8 @@ moves the stick (sensor_msgs/Joy on /joy, through the Scenario nodelet) in small
 `rate` Hz while the approach runs paced to the wall clock, and measures for every input the time from
 its stamp to the arrival here of the first ship_lrm/RotorLoads that carries it (pilot_stamp): pilot
 input to published loads, both hops included. At the end of the run writes a JSON summary to `~out`
-(and prints it): latencies (p50, p99, max), the FlightModel's deadline misses (its diagnostics), and
-the run's length. Wall-clock stamps: needs realtime:=true."""
+(and prints it): latencies (p50, p99, max), the FlightModel's deadline misses (its diagnostics), the
+share of loads on the Pitt-Peters fallback per 5 s (where the misses fall), and the run's length. Wall-clock stamps: needs realtime:=true."""
 import json
 import math
 import threading
@@ -34,12 +34,16 @@ def main():
     amplitude = float(rospy.get_param("~amplitude", 0.1))  # stick deflection (collective: gain 20 % -> 2 %)
     lock = threading.Lock()
     sent, latency, flight = {}, [], {}
+    windows = {}  # 5 s of simulated time -> [loads, of them on Pitt-Peters (fallback)]
     done = threading.Event()
 
     def on_loads(m):
         now = time.time()
         key = m.pilot_stamp.to_nsec()
         with lock:
+            w = windows.setdefault(int(m.time // 5.0) * 5, [0, 0])
+            w[0] += 1
+            w[1] += int(m.fallback)
             if key in sent and key not in flight:
                 flight[key] = now
                 latency.append(now - sent[key])
@@ -82,6 +86,8 @@ def main():
             "latency_ms_max": max(lat_ms) if lat_ms else float("nan"),
             "wall_seconds": time.time() - start,
             "flight_model_diagnostics": diag,
+            # where the misses fall: [window start s, loads, of them fallback] (loads sample the steps)
+            "loads_fallback_per_5s": [[t, n, f] for t, (n, f) in sorted(windows.items())],
         }
     text = json.dumps(result, indent=2, sort_keys=True)
     print(text)
