@@ -197,37 +197,41 @@ std::uint8_t Lattice::reflection_mode(int x, int y, int z) const {
   return 0;
 }
 
-std::uint32_t Lattice::link_mask(int x, int y, int z) const {
-  const int n[3] = {cfg_.nx, cfg_.ny, cfg_.nz};
-  std::uint32_t mask = 0;
-  if (x > 0 && y > 0 && z > 0 && x < n[0] - 1 && y < n[1] - 1 && z < n[2] - 1) {  // all neighbours inside
+// Links of the cells of each class (cell_class) that leave the domain through a non-periodic face
+// (bit i), with kMovingWallLink where one of those faces is a moving wall. Through a periodic face
+// a link reaches the cell the class's offsets give (bulk_class_offsets).
+static std::array<std::uint32_t, 27> face_link_masks(const std::array<FaceCondition, 6>& faces) {
+  std::array<std::uint32_t, 27> m{};
+  for (int cls = 0; cls < 27; ++cls) {
+    const int k[3] = {cls / 9, (cls / 3) % 3, cls % 3};  // first (0), interior (1) or last (2) along each axis
     for (int i = 1; i < Q; ++i) {
-      const auto t = static_cast<CellType>(type_[index(x + d3q19::cx(i), y + d3q19::cy(i), z + d3q19::cz(i))] & ~kGeneralBit);
-      if (is_wall(t)) mask |= 1u << i;
-      if (t == CellType::MovingWall) mask |= kMovingWallLink;
-    }
-    return mask;
-  }
-  for (int i = 1; i < Q; ++i) {
-    int p[3] = {x + d3q19::cx(i), y + d3q19::cy(i), z + d3q19::cz(i)};
-    bool hit = false, moving = false;
-    for (int a = 0; a < 3; ++a)
-      if (p[a] < 0 || p[a] >= n[a]) {
-        const FaceType f = cfg_.faces[2 * a + (p[a] >= n[a] ? 1 : 0)].type;
-        if (f == FaceType::Periodic) {
-          p[a] = (p[a] + n[a]) % n[a];
-        } else {
-          hit = true;
-          moving = moving || f == FaceType::MovingWall;
-        }
+      bool hit = false, moving = false;
+      for (int a = 0; a < 3; ++a) {
+        const int ci = d3q19::c(i, a);
+        const int f = (k[a] == 0 && ci < 0) ? 2 * a : ((k[a] == 2 && ci > 0) ? 2 * a + 1 : -1);
+        if (f < 0 || faces[f].type == FaceType::Periodic) continue;
+        hit = true;
+        moving = moving || faces[f].type == FaceType::MovingWall;
       }
-    if (!hit) {
-      const auto t = static_cast<CellType>(type_[index(p[0], p[1], p[2])] & ~kGeneralBit);
-      hit = is_wall(t);
-      moving = t == CellType::MovingWall;
+      if (hit) m[cls] |= 1u << i;
+      if (moving) m[cls] |= kMovingWallLink;
     }
-    if (hit) mask |= 1u << i;
-    if (moving) mask |= kMovingWallLink;
+  }
+  return m;
+}
+
+// face_links: face_link_masks of the configuration; row_offsets_ is set.
+std::uint32_t Lattice::link_mask(int x, int y, int z, const std::array<std::uint32_t, 27>& face_links) const {
+  const int n[3] = {cfg_.nx, cfg_.ny, cfg_.nz};
+  const int cls = cell_class(n, x, y, z);
+  const std::int64_t* off = &row_offsets_[Q * cls];
+  const std::size_t c = index(x, y, z);
+  std::uint32_t mask = face_links[cls];
+  for (int i = 1; i < Q; ++i) {
+    if ((face_links[cls] >> i) & 1u) continue;
+    const auto t = static_cast<CellType>(type_[c + off[i]] & ~kGeneralBit);
+    if (is_wall(t)) mask |= 1u << i;
+    if (t == CellType::MovingWall) mask |= kMovingWallLink;
   }
   return mask;
 }
@@ -389,6 +393,7 @@ void Lattice::finalize() {
   std::unordered_map<std::uint32_t, std::array<float, 4>> values;
   for (const auto& [c, v] : explicit_values_) values[c] = v;
   row_offsets_ = bulk_class_offsets(n);
+  const std::array<std::uint32_t, 27> face_links = face_link_masks(cfg_.faces);
   const std::vector<char> support = support_marks();
   // Link masks and reflection rules of all fluid-like cells first, in parallel: the LRM rebuilds
   // its lattice whenever its wall cells change (a moving ship: dozens of times a second).
@@ -418,7 +423,7 @@ void Lattice::finalize() {
         const std::size_t c = index(x, y, z);
         if (is_wall(static_cast<CellType>(type_[c]))) continue;
         tag_[c] = slip ? reflection_mode(x, y, z) : 0;  // reflection_mode is 0 without slip walls
-        if (!inner_row || x == 0 || x == n[0] - 1) masks[c] = link_mask(x, y, z);
+        if (!inner_row || x == 0 || x == n[0] - 1) masks[c] = link_mask(x, y, z, face_links);
       }
     }
   for (int z = 0; z < n[2]; ++z)

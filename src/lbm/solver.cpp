@@ -134,6 +134,10 @@ void Solver::initialize(const std::vector<float>& rho, const std::vector<float>&
   if (bad >= 0 && !rho.empty() && !(rho[bad] > 0.0f && rho[bad] < 2.0f))
     throw ConfigError("initialize: density must lie in (0, 2) lattice units");
   if (bad >= 0) throw ConfigError("initialize: initial velocity above the Mach limit or not finite");
+  start_from(rho, u);
+}
+
+void Solver::start_from(const std::vector<float>& rho, const std::vector<float>& u) {
   if (reference_change_pending_) {  // the new state is the reference's: nothing left to follow
     clear_reference_change();
   }
@@ -201,7 +205,7 @@ bool Solver::change_walls(Lattice& next, bool restart_flow) {
     }
     do_change_walls(std::move(next), {}, {});
     view_.nheld = static_cast<int>(lattice_.held_cells().size());
-    initialize(f.rho, f.u);
+    start_from(f.rho, f.u);  // checked above
     return true;
   }
   const bool odd = steps_ % 2 == 1;

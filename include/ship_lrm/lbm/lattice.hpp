@@ -137,7 +137,7 @@ class Lattice {
  private:
   void check_cell(int x, int y, int z, const char* what) const;
   std::uint8_t reflection_mode(int x, int y, int z) const;
-  std::uint32_t link_mask(int x, int y, int z) const;
+  std::uint32_t link_mask(int x, int y, int z, const std::array<std::uint32_t, 27>& face_links) const;
   void set_open(int x, int y, int z, CellType t, const std::array<float, 4>& value);
   int open_normal(int x, int y, int z) const;  // outward normal code, or -1 if not on an open-able face
   std::vector<char> support_marks() const;

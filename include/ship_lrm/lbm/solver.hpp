@@ -126,6 +126,8 @@ class Solver {
 
  protected:
   explicit Solver(Lattice lattice);
+  // initialize() without its check of the state (change_walls has checked it)
+  void start_from(const std::vector<float>& rho, const std::vector<float>& u);
   // Backend work: one step of the given parity, field extraction and equilibrium initialisation.
   virtual void do_step(bool odd) = 0;
   virtual void do_hold(bool next_odd) = 0;  // the held cells after a step (hold_state, hold_emit)
