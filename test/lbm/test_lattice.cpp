@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "flow_cases.hpp"
+#include "ship_lrm/lbm/lattice_view.hpp"
 #include "ship_lrm/lbm/vtk_writer.hpp"
 
 using namespace ship_lrm::lbm;
@@ -143,6 +144,74 @@ TEST(Walls, ClosedBoxMixedWallsConservesMass) {
   const Fields f = s->fields();
   EXPECT_NEAR(total_mass(f) / m0, 1.0, 1e-5);
   EXPECT_GT(kinetic_energy(f), 0.0);  // the lid drives a flow
+}
+
+// The link mask finalize hands the solvers for every fluid-like cell (bit i: the neighbour at
+// c + c_i is a wall or lies beyond a non-periodic face; kMovingWallLink: one of those moves), found
+// here by walking to each neighbour, on a lattice that mixes periodic, moving-wall, wall and open
+// faces with resting and moving wall cells inside, next to the faces too.
+TEST(Walls, LinkMasksMatchAWalkToEachNeighbour) {
+  LatticeConfig cfg = periodic_config(7, 8, 9, 0.05f);  // x periodic
+  cfg.faces[2].type = FaceType::MovingWall;
+  cfg.faces[2].velocity = {0.02f, 0, 0};
+  cfg.faces[3].type = FaceType::Wall;
+  cfg.faces[4].type = FaceType::VelocityInlet;
+  cfg.faces[4].velocity = {0, 0, 0.02f};
+  cfg.faces[5].type = FaceType::ImpedanceOutlet;
+  Lattice lat(cfg);
+  lat.set_wall(3, 4, 4);
+  lat.set_wall(0, 3, 5);  // on the periodic face: reached across it
+  WallMotion spin;
+  spin.omega[2] = 0.01f;
+  const int slot = lat.add_wall_motion(spin);
+  lat.set_moving_wall(5, 2, 3, slot);
+  lat.set_moving_wall(6, 6, 2, slot);
+  lat.finalize();
+  const int n[3] = {cfg.nx, cfg.ny, cfg.nz};
+  const auto base = [&](int x, int y, int z) { return static_cast<CellType>(lat.types()[lat.index(x, y, z)] & ~kGeneralBit); };
+  const auto walked = [&](std::size_t c) {
+    const int x = static_cast<int>(c % n[0]), y = static_cast<int>((c / n[0]) % n[1]), z = static_cast<int>(c / (n[0] * n[1]));
+    std::uint32_t m = 0;
+    for (int i = 1; i < Q; ++i) {
+      int p[3] = {x + d3q19::cx(i), y + d3q19::cy(i), z + d3q19::cz(i)};
+      bool wall = false, moving = false;
+      for (int a = 0; a < 3; ++a) {
+        if (p[a] >= 0 && p[a] < n[a]) continue;
+        const FaceCondition& f = cfg.faces[2 * a + (p[a] >= n[a] ? 1 : 0)];
+        if (f.type == FaceType::Periodic) {
+          p[a] = (p[a] + n[a]) % n[a];
+          continue;
+        }
+        wall = true;
+        moving = moving || f.type == FaceType::MovingWall;
+      }
+      if (!wall) {
+        const CellType t = base(p[0], p[1], p[2]);
+        wall = t == CellType::Wall || t == CellType::SlipWall || t == CellType::MovingWall;
+        moving = t == CellType::MovingWall;
+      }
+      if (wall) m |= 1u << i;
+      if (moving) m |= kMovingWallLink;
+    }
+    return m;
+  };
+  std::size_t checked = 0, moving_links = 0;
+  const auto check = [&](std::size_t c, std::uint32_t mask) {
+    EXPECT_EQ(mask, walked(c)) << "cell " << c;
+    moving_links += (mask & kMovingWallLink) != 0;
+    ++checked;
+  };
+  for (const Segment& sg : lat.bulk_segments())
+    for (std::uint32_t k = 0; k < sg.count; ++k) check(sg.first + k, sg.link_mask);
+  for (std::size_t k = 0; k < lat.general_cells().size(); ++k) check(lat.general_cells()[k], lat.general_link_masks()[k]);
+  for (std::size_t k = 0; k < lat.boundary_cells().size(); ++k) check(lat.boundary_cells()[k], lat.boundary_link_masks()[k]);
+  std::size_t walls = 0;
+  for (std::size_t c = 0; c < lat.cells(); ++c) {
+    const CellType t = static_cast<CellType>(lat.types()[c] & ~kGeneralBit);
+    walls += t == CellType::Wall || t == CellType::SlipWall || t == CellType::MovingWall;
+  }
+  EXPECT_EQ(checked + walls, lat.cells());  // every fluid-like cell once
+  EXPECT_GT(moving_links, 2u * 7u);         // the moving face's row and the moving cells' neighbours
 }
 
 // The VTK writer produces an image-data file (header and size) and reports unwritable paths.
