@@ -4,8 +4,9 @@ moves the stick (sensor_msgs/Joy on /joy, through the Scenario nodelet) in small
 `rate` Hz while the approach runs paced to the wall clock, and measures for every input the time from
 its stamp to the arrival here of the first ship_lrm/RotorLoads that carries it (pilot_stamp): pilot
 input to published loads, both hops included. At the end of the run writes a JSON summary to `~out`
-(and prints it): latencies (p50, p99, max), the FlightModel's deadline misses (its diagnostics), the
-share of loads on the Pitt-Peters fallback per 5 s (where the misses fall), and the run's length. Wall-clock stamps: needs realtime:=true."""
+(and prints it): latencies (p50, p99, max), the FlightModel's deadline misses and the LrmSolver's job
+times (their diagnostics), the share of loads on the Pitt-Peters fallback per 5 s (where the misses
+fall), and the run's length. Wall-clock stamps: needs realtime:=true."""
 import json
 import math
 import threading
@@ -48,7 +49,7 @@ def main():
                 flight[key] = now
                 latency.append(now - sent[key])
 
-    diag = {}
+    diag, lrm_diag = {}, {}
 
     def on_diag(a):
         for s in a.status:
@@ -56,6 +57,8 @@ def main():
                 diag.update({v.key: v.value for v in s.values})
                 diag["level"] = int(s.level)
                 diag["message"] = s.message
+            if s.name.endswith("LRM solver"):  # its job times (the LBM work of each request)
+                lrm_diag.update({v.key: v.value for v in s.values})
 
     rospy.Subscriber("/rotor/loads", RotorLoads, on_loads, queue_size=1000, tcp_nodelay=True)
     rospy.Subscriber("/diagnostics", DiagnosticArray, on_diag)
@@ -86,6 +89,7 @@ def main():
             "latency_ms_max": max(lat_ms) if lat_ms else float("nan"),
             "wall_seconds": time.time() - start,
             "flight_model_diagnostics": diag,
+            "lrm_solver_diagnostics": lrm_diag,
             # where the misses fall: [window start s, loads, of them fallback] (loads sample the steps)
             "loads_fallback_per_5s": [[t, n, f] for t, (n, f) in sorted(windows.items())],
         }

@@ -13,8 +13,10 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/Marker.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <deque>
 #include <pluginlib/class_list_macros.hpp>
 
 #include "ship_lrm/flight/parameters.hpp"
@@ -102,6 +104,8 @@ class LrmSolverNodelet : public nodelet::Nodelet {
   ros::Time stamp(double t) const { return epoch_.stamp(t); }
 
   void on_forces(const ship_lrm::RotorForces::ConstPtr& msg) {
+    // real time: ROS time is the wall clock, and the link stamps each request as it sends it
+    if (realtime_) remember(delay_ms_, 1e3 * (ros::Time::now() - msg->header.stamp).toSec());
     lrm::InflowRequest r;
     try {
       r = from_msg(*msg);
@@ -124,6 +128,7 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const long steps = fluid_->domain().solver().steps_done() - steps0;
+    remember(job_ms_, 1e3 * wall);
     if (steps > 0) {
       step_ms_ = 1e3 * wall / steps;
       const double cells = std::pow(fluid_->domain().cells_per_edge(), 3);
@@ -223,6 +228,23 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     stat.add("wall cells", fluid_->domain().wall_cells());
     stat.add("ship voxelisations", fluid_->voxelisations());
     stat.add("face refreshes", fluid_->face_refreshes());
+    // where a real-time job's time goes (docs/benchmarks.md, "ROS layer in real time"): its LBM work,
+    // and its wait between the flight model's request and its handling here
+    stat.add("job (ms), p50 of the last 1000", percentile(job_ms_, 0.5));
+    stat.add("job (ms), p99 of the last 1000", percentile(job_ms_, 0.99));
+    if (realtime_) stat.add("request to its handling (ms), p99 of the last 1000", percentile(delay_ms_, 0.99));
+  }
+
+  static constexpr std::size_t kJobWindow = 1000;
+  static void remember(std::deque<double>& d, double v) {
+    d.push_back(v);
+    if (d.size() > kJobWindow) d.pop_front();
+  }
+  static double percentile(std::deque<double> d, double q) {
+    if (d.empty()) return 0.0;
+    const auto k = static_cast<std::ptrdiff_t>(std::ceil(q * static_cast<double>(d.size()))) - 1;
+    std::nth_element(d.begin(), d.begin() + std::max<std::ptrdiff_t>(k, 0), d.end());
+    return d[static_cast<std::size_t>(std::max<std::ptrdiff_t>(k, 0))];
   }
 
   lrm::ApproachConfig cfg_;
@@ -236,6 +258,7 @@ class LrmSolverNodelet : public nodelet::Nodelet {
   long served_ = 0;
   bool diverged_ = false;
   std::string failure_;
+  std::deque<double> job_ms_, delay_ms_;  // the last kJobWindow jobs served, requests received
   ros::Publisher inflow_, slice_, box_;
   ros::Subscriber forces_, info_;
   tf2_ros::TransformBroadcaster tf_;

@@ -40,6 +40,9 @@ class ApproachLaunch(unittest.TestCase):
         sources = set()  # where the LRM solver says its wake table comes from (diagnostics)
         rospy.Subscriber("/diagnostics", DiagnosticArray, lambda a: sources.update(
             v.value for s in a.status if "LRM solver" in s.name for v in s.values if v.key == "wake table from"))
+        jobs = {}  # the LRM solver's job times (diagnostics)
+        rospy.Subscriber("/diagnostics", DiagnosticArray, lambda a: jobs.update(
+            {v.key: v.value for s in a.status if "LRM solver" in s.name for v in s.values if v.key.startswith("job (ms)")}))
         for topic, kind in [("/odom", Odometry), ("/ship/twist", TwistStamped), ("/lrm/slice", PointCloud2),
                             ("/wake/info", WakeInfo), ("/diagnostics", DiagnosticArray)]:
             rospy.Subscriber(topic, kind, count(topic))
@@ -63,6 +66,8 @@ class ApproachLaunch(unittest.TestCase):
             self.assertGreater(seen.get(topic, 0), 0, "nothing on " + topic)
         self.assertGreaterEqual(seen["/odom"], int(DURATION / 0.02) - 2)  # 50 Hz in simulated time
         self.assertEqual(sources, {rospy.get_param("~wake_source", "file")})
+        self.assertGreater(float(jobs.get("job (ms), p99 of the last 1000", 0)), 0.0)
+        self.assertLessEqual(float(jobs["job (ms), p50 of the last 1000"]), float(jobs["job (ms), p99 of the last 1000"]))
         for frame in FRAMES[1:]:
             self.assertTrue(buffer.can_transform("world", frame, rospy.Time(0), rospy.Duration(5.0)),
                             "no tf from world to " + frame)
