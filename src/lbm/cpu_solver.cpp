@@ -1,4 +1,5 @@
 // CPU backend: OpenMP over the cell lists of the Lattice, per-cell physics from lattice_view.hpp.
+#include <omp.h>
 #include <sys/mman.h>
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <memory>
 
 #include "ship_lrm/lbm/solver.hpp"
+#include "ship_lrm/lbm/team_loop.hpp"
 
 namespace ship_lrm::lbm {
 namespace {
@@ -100,13 +102,6 @@ class CpuSolver final : public Solver {
     view_.bnd_grad_weight = lattice_.boundary_gradient_weights().data();
     view_.held_cell = lattice_.held_cells().data();
     view_.held_wall = lattice_.held_walls().data();
-  }
-
-  void do_hold(bool next_odd) override {
-    const LatticeView& v = view_;
-    const int n = v.nheld;
-#pragma omp parallel for schedule(static)
-    for (int h = 0; h < n; ++h) next_odd ? hold_cell<false>(v, h) : hold_cell<true>(v, h);
   }
 
   void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) override {
@@ -216,7 +211,9 @@ class CpuSolver final : public Solver {
     }
   }
 
-  // The passes of a step (see update_boundary_state in lattice_view.hpp).
+  // The passes of a step (see update_boundary_state in lattice_view.hpp), then the held cells
+  // (hold_cell), in one parallel region. Each loop is a TeamLoop (team_loop.hpp): a static share per
+  // thread that the others finish when it is held up.
   template <bool kOdd, bool kSmagorinsky, int kForce>
   void run_step() {
     const LatticeView& v = view_;
@@ -225,10 +222,17 @@ class CpuSolver final : public Solver {
     const auto& masks = lattice_.general_link_masks();
     const long nseg = static_cast<long>(segs.size()), ng = static_cast<long>(general.size());
     const bool store = v.aux != nullptr;
+    const int threads = omp_get_max_threads();
+    const long nblocks = (v.nbnd + kBoundaryBlock - 1) / kBoundaryBlock;
+    loops_[0].reset(nseg, threads, kSegmentChunk);
+    loops_[1].reset(ng, threads, kGeneralChunk);
+    loops_[2].reset(v.nbnd, threads, kBoundaryChunk);
+    loops_[3].reset(nblocks, threads, kBlockChunk);
+    loops_[4].reset(v.nheld, threads, kHeldChunk);
 #pragma omp parallel
     {
-#pragma omp for schedule(static) nowait
-      for (long s = 0; s < nseg; ++s) {
+      const int t = omp_get_thread_num();
+      loops_[0].run(t, [&](long s) {
         const bool st = store && segs[s].store_state;
         if (kForce != kForceField || segment_forced_[s])
           update_segment<kOdd, kSmagorinsky, kForce>(segs[s], st);
@@ -236,15 +240,19 @@ class CpuSolver final : public Solver {
           update_segment<kOdd, kSmagorinsky, kUniformForce>(segs[s], st);
         else
           update_segment<kOdd, kSmagorinsky, kNoForce>(segs[s], st);
-      }
-#pragma omp for schedule(static)
-      for (long k = 0; k < ng; ++k) update_wall_cell<kOdd>(v, general[k], masks[k]);
-      // implicit barrier: every support cell's state is stored
+      });
+      loops_[1].run(t, [&](long k) { update_wall_cell<kOdd>(v, general[k], masks[k]); });
       if (v.nbnd) {
-#pragma omp for schedule(static)
-        for (int b = 0; b < v.nbnd; ++b) update_boundary_state<kOdd>(v, b);
-#pragma omp for schedule(static) nowait
-        for (int b0 = 0; b0 < v.nbnd; b0 += kBoundaryBlock) update_boundary_block<kOdd, kSmagorinsky, kForce>(b0);
+#pragma omp barrier
+        // every support cell's state is stored
+        loops_[2].run(t, [&](long b) { update_boundary_state<kOdd>(v, static_cast<int>(b)); });
+#pragma omp barrier
+        loops_[3].run(t, [&](long k) { update_boundary_block<kOdd, kSmagorinsky, kForce>(static_cast<int>(k * kBoundaryBlock)); });
+      }
+      if (v.nheld) {
+#pragma omp barrier
+        // every cell has emitted this step's populations
+        loops_[4].run(t, [&](long h) { hold_cell<kOdd>(v, static_cast<int>(h)); });
       }
     }
   }
@@ -401,6 +409,10 @@ class CpuSolver final : public Solver {
   // Per bulk segment: 1 where a cell of it may hold a non-zero field force (set when one is set,
   // cleared only by set_force_field), so that segments without one skip the field.
   std::vector<std::uint8_t> segment_forced_;
+  // run_step's loops (segments, general cells, boundary states, boundary blocks, held cells) and their
+  // chunks (a few dozen per thread's share at N = 32)
+  static constexpr long kSegmentChunk = 16, kGeneralChunk = 32, kBoundaryChunk = 128, kBlockChunk = 2, kHeldChunk = 32;
+  TeamLoop loops_[5];
 };
 
 }  // namespace

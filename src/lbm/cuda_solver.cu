@@ -420,15 +420,14 @@ class CudaSolver final : public Solver {
   void do_step(bool odd) override {
     odd ? run_step<true>() : run_step<false>();
     check(cudaGetLastError(), "step launch");
-  }
-
-  void do_hold(bool next_odd) override {
-    const unsigned nb = blocks(static_cast<std::size_t>(view_.nheld));
-    if (next_odd)
-      hold_kernel<false><<<nb, kBlock>>>(view_);
-    else
-      hold_kernel<true><<<nb, kBlock>>>(view_);
-    check(cudaGetLastError(), "hold launch");
+    if (view_.nheld) {  // the held cells after the step (hold_cell, parity of the step done)
+      const unsigned nb = blocks(static_cast<std::size_t>(view_.nheld));
+      if (odd)
+        hold_kernel<true><<<nb, kBlock>>>(view_);
+      else
+        hold_kernel<false><<<nb, kBlock>>>(view_);
+      check(cudaGetLastError(), "hold launch");
+    }
   }
 
   void do_fields(bool next_odd, Fields& out) override {

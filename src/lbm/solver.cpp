@@ -162,7 +162,6 @@ void Solver::step(long n) {
   for (long k = 0; k < n; ++k) {
     do_step(steps_ % 2 == 1);
     ++steps_;
-    if (view_.nheld) do_hold(steps_ % 2 == 1);
     if (reference_change_pending_) clear_reference_change();  // the impedance outlets took it in this step
     if (interval > 0 && steps_ % interval == 0) check_divergence();
   }

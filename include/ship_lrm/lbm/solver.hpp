@@ -128,9 +128,9 @@ class Solver {
   explicit Solver(Lattice lattice);
   // initialize() without its check of the state (change_walls has checked it)
   void start_from(const std::vector<float>& rho, const std::vector<float>& u);
-  // Backend work: one step of the given parity, field extraction and equilibrium initialisation.
+  // Backend work: one step of the given parity (the held cells' hold_cell after it included), field
+  // extraction and equilibrium initialisation.
   virtual void do_step(bool odd) = 0;
-  virtual void do_hold(bool next_odd) = 0;  // the held cells after a step (hold_state, hold_emit)
   virtual void do_fields(bool next_odd, Fields& out) = 0;
   virtual void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) = 0;
   virtual void do_set_populations(const std::vector<float>& g) = 0;           // validated, populations() layout
