@@ -6,18 +6,26 @@
 // x, y, z, speed, u, v, w, wall), the domain's box as lrm/domain (Marker), and diagnostics.
 // wake_source: file (read the table here) or server (the WakeServer's table announced on wake/info,
 // its windows through the service wake/window: for a solver on a machine without the file).
+// The domain is built and every request served on the nodelet's own thread, from its own callback
+// queue: one thread (and one OpenMP team) for the LBM, and a request handed straight from the
+// publishing thread to it, not through the nodelet manager's dispatcher and worker threads
+// (docs/benchmarks.md, "ROS layer in real time", session 22).
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <nodelet/nodelet.h>
+#include <pthread.h>
+#include <ros/callback_queue.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <sensor_msgs/point_cloud2_iterator.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/Marker.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <deque>
 #include <pluginlib/class_list_macros.hpp>
+#include <thread>
 
 #include "ship_lrm/flight/parameters.hpp"
 #include "ship_lrm/lrm/approach_fluid.hpp"
@@ -32,6 +40,12 @@
 namespace ship_lrm::ros_layer {
 
 class LrmSolverNodelet : public nodelet::Nodelet {
+ public:
+  ~LrmSolverNodelet() override {
+    stop_ = true;
+    if (thread_.joinable()) thread_.join();
+  }
+
  private:
   void onInit() override {
     ros::NodeHandle& nh = getNodeHandle();
@@ -72,7 +86,7 @@ class LrmSolverNodelet : public nodelet::Nodelet {
 
   // wake_source:=server: the table the wake server announced, its windows through its service
   void on_info(const ship_lrm::WakeInfo::ConstPtr& m) {
-    if (fluid_ || failed_) return;
+    if (thread_.joinable() || failed_) return;
     try {
       auto table = served_wake_table(*m, getNodeHandle());
       cfg_.table = m->path;
@@ -83,8 +97,22 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     }
   }
 
-  // The domain (on the table given, or the file's), then the topics.
+  // The solver's thread: the domain (on the table given, or the file's), then the topics, then the
+  // requests until the nodelet is unloaded.
   void start(std::shared_ptr<wake::WakeTable> table) {
+    thread_ = std::thread([this, table = std::move(table)]() mutable {
+      pthread_setname_np(pthread_self(), "lrm_solver");
+      try {
+        build(std::move(table));
+      } catch (const std::exception& e) {
+        fail(e.what());
+        return;
+      }
+      while (!stop_ && ros::ok()) jobs_.callAvailable(ros::WallDuration(0.05));
+    });
+  }
+
+  void build(std::shared_ptr<wake::WakeTable> table) {
     ros::NodeHandle& nh = getNodeHandle();
     fluid_ = std::make_unique<lrm::ApproachFluid>(cfg_, params_, std::move(table));
     if (realtime_) fluid_->set_catch_up_limit(lrm::kRealTimeCatchUpSteps);
@@ -98,7 +126,9 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     diagnostics_.setHardwareID("ship_lrm LRM solver");
     diagnostics_.add("LRM solver", this, &LrmSolverNodelet::diagnose);
     epoch_.follow(nh, clock_offset_);
-    forces_ = nh.subscribe("rotor/forces", 4, &LrmSolverNodelet::on_forces, this, ros::TransportHints().tcpNoDelay());
+    ros::NodeHandle jobs(nh);
+    jobs.setCallbackQueue(&jobs_);
+    forces_ = jobs.subscribe("rotor/forces", 4, &LrmSolverNodelet::on_forces, this, ros::TransportHints().tcpNoDelay());
   }
 
   ros::Time stamp(double t) const { return epoch_.stamp(t); }
@@ -250,7 +280,8 @@ class LrmSolverNodelet : public nodelet::Nodelet {
   lrm::ApproachConfig cfg_;
   flight::HelicopterParameters params_;
   std::string wake_source_ = "file";
-  bool realtime_ = false, failed_ = false;
+  bool realtime_ = false;
+  std::atomic<bool> failed_{false};  // set by the solver's thread too
   std::unique_ptr<lrm::ApproachFluid> fluid_;
   double slice_interval_ = 0.1, clock_offset_ = 1.0, next_slice_ = 0, step_ms_ = 0, mlups_ = 0, max_mach_ = 0;
   SimEpoch epoch_;
@@ -260,9 +291,12 @@ class LrmSolverNodelet : public nodelet::Nodelet {
   std::string failure_;
   std::deque<double> job_ms_, delay_ms_;  // the last kJobWindow jobs served, requests received
   ros::Publisher inflow_, slice_, box_;
+  ros::CallbackQueue jobs_;  // rotor/forces, served by thread_ (declared before forces_: outlives it)
   ros::Subscriber forces_, info_;
   tf2_ros::TransformBroadcaster tf_;
   diagnostic_updater::Updater diagnostics_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;  // builds the domain, then serves jobs_
 };
 
 }  // namespace ship_lrm::ros_layer

@@ -1,6 +1,7 @@
 // The flight model's end of the rotor <-> LRM link over ROS (see ros_inflow_link.hpp).
 #include "ship_lrm/ros/ros_inflow_link.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 #include <thread>
@@ -11,7 +12,9 @@ namespace ship_lrm::ros_layer {
 
 RosInflowLink::RosInflowLink(ros::NodeHandle& nh, double timeout_s) : timeout_s_(timeout_s) {
   forces_ = nh.advertise<ship_lrm::RotorForces>("rotor/forces", 4);
-  inflow_ = nh.subscribe("rotor/inflow", 4, &RosInflowLink::on_inflow, this, ros::TransportHints().tcpNoDelay());
+  ros::NodeHandle own(nh);
+  own.setCallbackQueue(&answers_);
+  inflow_ = own.subscribe("rotor/inflow", 4, &RosInflowLink::on_inflow, this, ros::TransportHints().tcpNoDelay());
 }
 
 bool RosInflowLink::wait_for_solver(double timeout_s) {
@@ -32,27 +35,41 @@ void RosInflowLink::on_inflow(const ship_lrm::RotorInflow::ConstPtr& msg) {
   if (msg->sequence != waiting_for_) return;  // a late answer to a request given up on
   answer_ = *msg;
   have_answer_ = true;
-  answered_.notify_all();
 }
 
 void RosInflowLink::cancel() {
   std::lock_guard<std::mutex> lock(mutex_);
   cancelled_ = true;
-  answered_.notify_all();
 }
 
 rotor::RotorInflow RosInflowLink::exchange(const lrm::InflowRequest& request) {
   ship_lrm::RotorForces msg = to_msg(request);
   msg.header.stamp = ros::Time::now();
-  std::unique_lock<std::mutex> lock(mutex_);
-  waiting_for_ = request.sequence;
-  have_answer_ = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    waiting_for_ = request.sequence;
+    have_answer_ = false;
+  }
   const auto start = std::chrono::steady_clock::now();
+  const auto until = start + std::chrono::duration<double>(timeout_s_);
   forces_.publish(msg);
-  const bool ok =
-      answered_.wait_for(lock, std::chrono::duration<double>(timeout_s_), [&] { return have_answer_ || cancelled_ || !ros::ok(); });
+  bool answered = false;
+  while (ros::ok()) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (have_answer_ || cancelled_) {
+        answered = have_answer_;
+        break;
+      }
+    }
+    const double left = std::chrono::duration<double>(until - std::chrono::steady_clock::now()).count();
+    if (left <= 0) break;
+    // returns as soon as an answer (or a stale one) is queued, else after the wait
+    answers_.callAvailable(ros::WallDuration(std::min(left, kCancelPoll)));
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
   waiting_for_ = -1;
-  if (!ok || !have_answer_) {
+  if (!answered) {
     std::ostringstream m;
     m << "the LRM solver did not answer request " << request.sequence << " (t = " << request.state.time << " s) within " << timeout_s_
       << " s";
