@@ -9,7 +9,6 @@
 #include <memory>
 
 #include "ship_lrm/lbm/solver.hpp"
-#include "ship_lrm/lbm/spin_barrier.hpp"
 #include "ship_lrm/lbm/team_loop.hpp"
 
 namespace ship_lrm::lbm {
@@ -214,8 +213,7 @@ class CpuSolver final : public Solver {
 
   // The passes of a step (see update_boundary_state in lattice_view.hpp), then the held cells
   // (hold_cell), in one parallel region. Each loop is a TeamLoop (team_loop.hpp): a static share per
-  // thread that the others finish when it is held up. Between the passes the team waits at a
-  // SpinBarrier (spin_barrier.hpp): no thread sleeps inside a step.
+  // thread that the others finish when it is held up.
   template <bool kOdd, bool kSmagorinsky, int kForce>
   void run_step() {
     const LatticeView& v = view_;
@@ -234,7 +232,6 @@ class CpuSolver final : public Solver {
 #pragma omp parallel
     {
       const int t = omp_get_thread_num();
-      const int team = omp_get_num_threads();
       loops_[0].run(t, [&](long s) {
         const bool st = store && segs[s].store_state;
         if (kForce != kForceField || segment_forced_[s])
@@ -246,14 +243,14 @@ class CpuSolver final : public Solver {
       });
       loops_[1].run(t, [&](long k) { update_wall_cell<kOdd>(v, general[k], masks[k]); });
       if (v.nbnd) {
-        barrier_.wait(team);
+#pragma omp barrier
         // every support cell's state is stored
         loops_[2].run(t, [&](long b) { update_boundary_state<kOdd>(v, static_cast<int>(b)); });
-        barrier_.wait(team);
+#pragma omp barrier
         loops_[3].run(t, [&](long k) { update_boundary_block<kOdd, kSmagorinsky, kForce>(static_cast<int>(k * kBoundaryBlock)); });
       }
       if (v.nheld) {
-        barrier_.wait(team);
+#pragma omp barrier
         // every cell has emitted this step's populations
         loops_[4].run(t, [&](long h) { hold_cell<kOdd>(v, static_cast<int>(h)); });
       }
@@ -416,7 +413,6 @@ class CpuSolver final : public Solver {
   // chunks (a few dozen per thread's share at N = 32)
   static constexpr long kSegmentChunk = 16, kGeneralChunk = 32, kBoundaryChunk = 128, kBlockChunk = 2, kHeldChunk = 32;
   TeamLoop loops_[5];
-  SpinBarrier barrier_;
 };
 
 }  // namespace

@@ -1,6 +1,5 @@
-// TeamLoop (team_loop.hpp) and SpinBarrier (spin_barrier.hpp): the CPU backend's work sharing and
-// the barrier between the passes of a step, and that the CPU solver's result does not depend on how
-// many threads share a step.
+// TeamLoop (team_loop.hpp): the CPU backend's work sharing, and that the CPU solver's result does not
+// depend on how many threads share a step.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -11,7 +10,6 @@
 
 #include "flow_cases.hpp"
 #include "ship_lrm/lbm/solver.hpp"
-#include "ship_lrm/lbm/spin_barrier.hpp"
 #include "ship_lrm/lbm/team_loop.hpp"
 
 namespace ship_lrm::lbm {
@@ -73,36 +71,6 @@ TEST(TeamLoop, AThreadHeldUpHasItsShareTakenOver) {
   if (omp_get_max_threads() < 2 && by_thread[1].load() == 0) GTEST_SKIP() << "no second OpenMP thread";
   EXPECT_EQ(by_thread[0].load() + by_thread[1].load(), n);
   EXPECT_EQ(by_thread[1].load(), n) << "the held-up thread's share was not taken over";
-}
-
-// No thread leaves the barrier before every thread of the team has reached it, over many rounds
-// (the barrier is reused every pass of every step): in each round every thread writes its slot,
-// waits, and must then see every slot written in this round; a second wait keeps the next round's
-// writes from overtaking a slow reader. One thread arrives late in some rounds (it sleeps first).
-TEST(SpinBarrier, NoThreadLeavesBeforeTheWholeTeamHasArrived) {
-  omp_set_dynamic(0);
-  for (int team : {1, 2, 3, 4}) {
-    SpinBarrier barrier;
-    const int rounds = 3000;
-    std::vector<std::atomic<int>> slot(static_cast<std::size_t>(team));
-    for (auto& x : slot) x.store(-1);
-    std::atomic<long> stale{0};
-    std::atomic<int> size{0};
-#pragma omp parallel num_threads(team)
-    {
-      const int t = omp_get_thread_num(), n = omp_get_num_threads();
-      if (t == 0) size.store(n);
-      for (int r = 0; r < rounds; ++r) {
-        if (t == n - 1 && r % 500 == 7) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-        slot[static_cast<std::size_t>(t)].store(r, std::memory_order_relaxed);
-        barrier.wait(n);
-        for (int u = 0; u < n; ++u)
-          if (slot[static_cast<std::size_t>(u)].load(std::memory_order_relaxed) != r) stale.fetch_add(1);
-        barrier.wait(n);
-      }
-    }
-    EXPECT_EQ(stale.load(), 0) << "team of " << size.load() << ": a thread left the barrier early";
-  }
 }
 
 // The CPU solver's populations after `steps` steps with `threads` OpenMP threads, on a lattice with
