@@ -18,7 +18,7 @@
 //   kPipelineDepth LBM intervals of wall time, so a job that must run two LBM steps (the flight steps
 //   do not divide the LBM step, so every so often one does), one that places changed walls, or one
 //   slowed by the machine still makes it, at the price of an inflow kPipelineDepth LBM intervals
-//   older (9.9 ms at N = 32, against the rotor's inflow time constant of the order of 0.1 s; a missed
+//   older (13.2 ms at N = 32, against the rotor's inflow time constant of the order of 0.1 s; a missed
 //   job's Pitt-Peters steps moved the approach's loads further from the simulated-time run than the
 //   third interval's lag: docs/benchmarks.md). A job late at its due step is dropped;
 //   Pitt-Peters serves until the next job makes its deadline. A busy LRM thread defers the next post.
@@ -50,8 +50,12 @@ enum class RealTimeMode { LockStep, Pipelined };
 
 // LBM intervals a pipelined job has between posting and its due step (see above). 3 since session
 // 19: with 2 the approach on 2 CPU cores missed 2 - 4 % of its deadlines, nearly all while the ship's
-// wall cells changed (about 4 ms per change, on top of a 2 ms step, within 6.6 ms).
-constexpr int kPipelineDepth = 3;
+// wall cells changed (about 4 ms per change, on top of a 2 ms step, within 6.6 ms). 4 since session
+// 22: over ROS, alternating with 3 in the same hour, the misses fell from 11.0, 1.0 and 3.1 % to 4.1,
+// 0.29 and 0.69 % (a wall change with its flow restart still takes 3 - 4 ms, and this VM's pace
+// varies by 2x from minute to minute), for an inflow 13.2 ms old at N = 32 instead of 9.9 ms
+// (docs/benchmarks.md, "ROS layer in real time", session 22).
+constexpr int kPipelineDepth = 4;
 
 // LBM steps one job of a real-time LRM may run (LrmInflow::set_catch_up_limit): a job that covers more
 // (the LRM had fallen behind the wall clock) drops the older part of its backlog. No more than a
