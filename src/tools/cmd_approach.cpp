@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "ship_lrm/flight/parameters.hpp"
 #include "ship_lrm/lrm/approach.hpp"
+#include "ship_lrm/lrm/realtime_inflow.hpp"
 #include "ship_lrm/lrm/wall_clock_pacer.hpp"
 #include "ship_lrm/wake/wake_precompute.hpp"
 
@@ -77,7 +78,8 @@ std::function<int()> add_approach_command(CLI::App& app) {
                 "held on the path during the start-up (which re-trims the controls for the inflow model), then flying freely "
                 "(6-DOF) with those controls fixed (no pilot): the open-loop response; ends where the skids touch the ship or the sea");
   cmd->add_flag("--pipelined", o->pipelined,
-                "with --realtime: the LRM three LBM intervals behind the flight model (more time per LBM step)");
+                "with --realtime: the LRM " + std::to_string(lrm::kPipelineDepth) +
+                    " LBM intervals behind the flight model (more time per LBM step)");
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
     lrm::ApproachConfig cfg = o->cfg;

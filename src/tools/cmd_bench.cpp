@@ -7,6 +7,7 @@
 #ifdef SHIP_LRM_HAVE_FLIGHT
 #include "ship_lrm/flight/flight_benchmark.hpp"
 #include "ship_lrm/lrm/lrm_benchmark.hpp"
+#include "ship_lrm/lrm/realtime_inflow.hpp"
 #include "ship_lrm/lrm/wake_feed.hpp"
 #endif
 
@@ -63,8 +64,9 @@ std::function<int()> add_bench_command(CLI::App& app) {
                     "pace the run to the wall clock with firm deadlines (LRM in its own thread, Pitt-Peters for late steps): "
                     "counts deadline misses");
   lrm_cmd->add_flag("--pipelined", lo->pipelined,
-                    "with --realtime: the LRM runs three LBM intervals behind the flight model (a job is due three LBM steps "
-                    "after its loads were posted) instead of lock-step");
+                    "with --realtime: the LRM runs " + std::to_string(lrm::kPipelineDepth) +
+                        " LBM intervals behind the flight model (a job is due that many LBM steps after its loads were posted) "
+                        "instead of lock-step");
   auto* wake_cmd = bench->add_subcommand("wake", "Serving an LRM domain's faces from a wake table, against the LBM step (issue 5)");
   struct WakeOpts {
     std::string table, backend = "cpu";
