@@ -51,10 +51,10 @@ enum class RealTimeMode { LockStep, Pipelined };
 // LBM intervals a pipelined job has between posting and its due step (see above). 3 since session
 // 19: with 2 the approach on 2 CPU cores missed 2 - 4 % of its deadlines, nearly all while the ship's
 // wall cells changed (about 4 ms per change, on top of a 2 ms step, within 6.6 ms). 4 since session
-// 22: over ROS, alternating with 3 in the same hour, the misses fell from 11.0, 1.0 and 3.1 % to 4.1,
-// 0.29 and 0.69 % (a wall change with its flow restart still takes 3 - 4 ms, and this VM's pace
-// varies by 2x from minute to minute), for an inflow 13.2 ms old at N = 32 instead of 9.9 ms
-// (docs/benchmarks.md, "ROS layer in real time", session 22).
+// 22: over ROS, alternating with 3 in five back-to-back pairs, fewer misses in four and half as many
+// in sum (a wall change with its flow restart still takes 3 - 4 ms, and this VM's pace varies by 2x
+// from minute to minute), for an inflow 13.2 ms old at N = 32 instead of 9.9 ms, which left C_T's
+// distance to the simulated-time run unchanged (docs/benchmarks.md, "ROS layer in real time", session 22).
 constexpr int kPipelineDepth = 4;
 
 // LBM steps one job of a real-time LRM may run (LrmInflow::set_catch_up_limit): a job that covers more
