@@ -433,6 +433,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
       stat.add("deadline miss fraction", st.miss_fraction());
       stat.add("worst inflow wait (ms)", 1e3 * st.worst_wait_s);
       stat.add("real-time mode", rt->mode() == lrm::RealTimeMode::Pipelined ? "pipelined" : "lockstep");
+      if (rt->mode() == lrm::RealTimeMode::Pipelined) stat.add("LBM intervals the LRM runs behind", lrm::kPipelineDepth);
     }
     if (realtime_) stat.add("steps ended after their due time", overruns_.load());
     stat.add("inflow model", l && l->lost() ? "pitt_peters (fallback)" : cfg_.inflow);

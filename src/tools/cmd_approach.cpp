@@ -147,10 +147,11 @@ std::function<int()> add_approach_command(CLI::App& app) {
               << " s in the coupled step: t_clock/t_sim " << run.wall_seconds() / run.sample().time << ")\n";
     if (const auto* rt = run.realtime_inflow()) {
       const lrm::RealTimeStats st = rt->stats();
-      std::cout << "real time (" << (o->pipelined ? "pipelined" : "lock-step") << "): " << st.deadline_misses << " of " << st.steps
-                << " steps missed their inflow deadline (" << 100.0 * st.miss_fraction() << " %) and flew on Pitt-Peters; "
-                << pacer.overruns() << " steps ended after their due time; the LRM dropped " << run.dropped_lrm_steps()
-                << " LBM steps to catch up\n";
+      std::cout << "real time ("
+                << (o->pipelined ? "pipelined, the LRM " + std::to_string(lrm::kPipelineDepth) + " LBM intervals behind" : "lock-step")
+                << "): " << st.deadline_misses << " of " << st.steps << " steps missed their inflow deadline ("
+                << 100.0 * st.miss_fraction() << " %) and flew on Pitt-Peters; " << pacer.overruns()
+                << " steps ended after their due time; the LRM dropped " << run.dropped_lrm_steps() << " LBM steps to catch up\n";
     }
     if (!o->no_plot && run.sample().time <= cfg.startup) {
       std::cout << "approach: no plots: the run ended before the start-up period (" << cfg.startup
