@@ -60,7 +60,8 @@ constexpr int kPipelineDepth = 4;
 // LBM steps one job of a real-time LRM may run (LrmInflow::set_catch_up_limit): a job that covers more
 // (the LRM had fallen behind the wall clock) drops the older part of its backlog. No more than a
 // pipelined job's kPipelineDepth intervals: a longer job would miss its deadline, the next would cover
-// still more, and the pipeline would stay behind (4 let one disturbance cost up to 90 % of a 20 s run).
+// still more, and the pipeline would stay behind (a limit of 4 while jobs were due 2 intervals after
+// posting let one disturbance cost up to 90 % of a 20 s run, session 10).
 constexpr long kRealTimeCatchUpSteps = kPipelineDepth;
 
 class RealTimeInflow final : public rotor::InflowModel {
