@@ -231,9 +231,7 @@ SHIP_LRM_HD int reflect(const LatticeView& v, std::size_t c, int i, bool arrivin
 
 // Moving-wall momentum term for the population arriving with direction d, per unit rho_w (the
 // checked gather and scatter multiply it by rho_w, see WallMotion::local_density).
-SHIP_LRM_HD float wall_term(int d, const float uw[3]) {
-  return 6.0f * d3q19::w(d) * (d3q19::cx(d) * uw[0] + d3q19::cy(d) * uw[1] + d3q19::cz(d) * uw[2]);
-}
+SHIP_LRM_HD float wall_term(int d, const float uw[3]) { return 6.0f * d3q19::w(d) * lattice_dot(d, uw); }
 
 // Ladd's moving-wall terms (term[i] per unit rho_w, 0 on links that reach fluid; weight[i] the
 // wall's local_density a) added to populations g (sign +1: gather) or taken off them (sign -1:
