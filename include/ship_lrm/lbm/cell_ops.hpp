@@ -63,22 +63,35 @@ SHIP_LRM_HD float lattice_dot(int i, const float v[3]) {
   return s;
 }
 
-// Discrete equilibrium, thesis eq. 6.8, minus the rest weight w_i.
-SHIP_LRM_HD float equilibrium(int i, float rho, const float u[3]) {
+// Discrete equilibrium, thesis eq. 6.8, minus the rest weight w_i, as its parts even and odd in c_i:
+// direction i has even + odd, its opposite (c = -c_i, same weight) even - odd, so the collision
+// evaluates the formula once per pair of directions. uu = |u|^2.
+struct EquilibriumParts {
+  float even, odd;
+};
+SHIP_LRM_HD EquilibriumParts equilibrium_parts(int i, float rho, const float u[3], float uu) {
   const float cu = lattice_dot(i, u);
-  const float uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
-  return d3q19::w(i) * ((rho - 1.0f) + rho * (3.0f * cu + 4.5f * cu * cu - 1.5f * uu));
+  const float w = d3q19::w(i);
+  return {w * ((rho - 1.0f) + rho * (4.5f * cu * cu - 1.5f * uu)), i == 0 ? 0.0f : w * rho * (3.0f * cu)};
+}
+SHIP_LRM_HD float speed_squared(const float u[3]) { return u[0] * u[0] + u[1] * u[1] + u[2] * u[2]; }
+SHIP_LRM_HD float equilibrium(int i, float rho, const float u[3]) {
+  const EquilibriumParts e = equilibrium_parts(i, rho, u, speed_squared(u));
+  return e.even + e.odd;
 }
 
 // Zeroth and first moments, thesis eqs. 6.11 and 6.12: rho and momentum j = sum c_i f_i.
+// By pairs of opposite directions (d3q19.hpp): c_i f_i + c_o f_o = c_i (f_i - f_o).
 SHIP_LRM_HD void moments(const float g[Q], float& rho, float j[3]) {
-  float drho = 0.0f, jx = 0.0f, jy = 0.0f, jz = 0.0f;
+  float drho = g[0], jx = 0.0f, jy = 0.0f, jz = 0.0f;
   SHIP_LRM_UNROLL
-  for (int i = 0; i < Q; ++i) {
-    drho += g[i];
-    add_times(jx, d3q19::cx(i), g[i]);
-    add_times(jy, d3q19::cy(i), g[i]);
-    add_times(jz, d3q19::cz(i), g[i]);
+  for (int i = 1; i <= 9; ++i) {
+    const int o = d3q19::opp(i);
+    drho += g[i] + g[o];
+    const float d = g[i] - g[o];
+    add_times(jx, d3q19::cx(i), d);
+    add_times(jy, d3q19::cy(i), d);
+    add_times(jz, d3q19::cz(i), d);
   }
   rho = 1.0f + drho;
   j[0] = jx;
@@ -124,12 +137,14 @@ SHIP_LRM_HD void add_frame_force(const FrameForce& fr, const float p[3], float r
 }
 
 // Norm sqrt(Pi:Pi) of the non-equilibrium momentum flux Pi_ab = sum c_a c_b (f - f_eq)
-// (thesis eq. 6.13).
+// (thesis eq. 6.13). c_a c_b is the same for a direction and its opposite, so the pairs' sums enter
+// (directions 1 - 9 and their opposites 10 - 18, d3q19.hpp); the rest direction has c = 0.
 SHIP_LRM_HD float pi_neq_norm(const float g[Q], const Macro& m) {
   float p[6] = {0, 0, 0, 0, 0, 0};  // xx yy zz xy xz yz
+  const float uu = speed_squared(m.u);
   SHIP_LRM_UNROLL
-  for (int i = 0; i < Q; ++i) {
-    const float ne = g[i] - equilibrium(i, m.rho, m.u);
+  for (int i = 1; i <= 9; ++i) {
+    const float ne = (g[i] + g[d3q19::opp(i)]) - 2.0f * equilibrium_parts(i, m.rho, m.u, uu).even;
     const int x = d3q19::cx(i), y = d3q19::cy(i), z = d3q19::cz(i);
     add_times(p[0], x * x, ne);
     add_times(p[1], y * y, ne);
@@ -160,13 +175,22 @@ SHIP_LRM_HD void relax(float g[Q], const Macro& m, const float force[3], const C
   const float omega = kSmagorinsky ? smagorinsky_omega(p.nu, p.smagorinsky, pi_neq_norm(g, m) / m.rho) : omega_from_nu(p.nu);
   const float guo = 1.0f - 0.5f * omega;
   const float uF = m.u[0] * force[0] + m.u[1] * force[1] + m.u[2] * force[2];
+  const float uu = speed_squared(m.u);
+  // Guo et al. 2002 eq. 20: (1 - omega/2) w_i [ (c_i - u)/cs^2 + (c_i.u) c_i / cs^4 ] . F, whose parts
+  // even and odd in c_i are (1 - omega/2) w_i (9 (c_i.u)(c_i.F) - 3 u.F) and (1 - omega/2) w_i 3 c_i.F
+  g[0] += omega * (equilibrium_parts(0, m.rho, m.u, uu).even - g[0]) + (kForced ? guo * d3q19::w(0) * (-3.0f * uF) : 0.0f);
   SHIP_LRM_UNROLL
-  for (int i = 0; i < Q; ++i) {
-    const float cu = lattice_dot(i, m.u);
-    const float cF = lattice_dot(i, force);
-    // Guo et al. 2002 eq. 20: (1 - omega/2) w_i [ (c_i - u)/cs^2 + (c_i.u) c_i / cs^4 ] . F
-    const float source = kForced ? guo * d3q19::w(i) * (3.0f * (cF - uF) + 9.0f * cu * cF) : 0.0f;
-    g[i] += omega * (equilibrium(i, m.rho, m.u) - g[i]) + source;
+  for (int i = 1; i <= 9; ++i) {
+    const int o = d3q19::opp(i);
+    const EquilibriumParts e = equilibrium_parts(i, m.rho, m.u, uu);
+    float source_even = 0.0f, source_odd = 0.0f;
+    if (kForced) {
+      const float cu = lattice_dot(i, m.u), cF = lattice_dot(i, force);
+      source_even = guo * d3q19::w(i) * (9.0f * cu * cF - 3.0f * uF);
+      source_odd = guo * d3q19::w(i) * (3.0f * cF);
+    }
+    g[i] += omega * ((e.even + e.odd) - g[i]) + (source_even + source_odd);
+    g[o] += omega * ((e.even - e.odd) - g[o]) + (source_even - source_odd);
   }
 }
 // With the model chosen at run time (cells off the vectorised bulk path).
