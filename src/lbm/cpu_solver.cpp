@@ -120,28 +120,82 @@ class CpuSolver final : public Solver {
   }
 
   // One segment of fluid cells (see Segment): bulk cells through fixed offsets, cells next to
-  // resting walls through one table of addresses; both loops vectorise.
+  // resting walls through one table of addresses; both loops vectorise. The vector loops take whole
+  // groups of kLanes cells; the rest of the segment (fewer) goes through update_segment_rest.
   template <bool kOdd, bool kSmagorinsky, int kForce, bool kStoreState>
   void update_segment(const Segment& sg) {
     const LatticeView& v = view_;
     const std::int64_t* off = v.row_offsets + Q * sg.cell_class;
-    const std::size_t first = sg.first, last = first + sg.count;
+    const std::size_t first = sg.first, last = first + sg.count, whole = first + sg.count / kLanes * kLanes;
     // a segment lies in one row (Lattice::finalize): its cells' positions without a division
     int x0, y0, z0;
     cell_coords(v, first, x0, y0, z0);
     const float y = static_cast<float>(y0), z = static_cast<float>(z0);
+    pop_t* src[Q];
+    pop_t* dst[Q];
+    segment_addresses<kOdd>(v, sg.link_mask, sg.reflection, off, src, dst);
     if (sg.link_mask == 0) {
 #pragma omp simd
-      for (std::size_t c = first; c < last; ++c)
+      for (std::size_t c = first; c < whole; ++c)
         update_bulk_cell<kOdd, kSmagorinsky, kForce, kStoreState>(v, c, static_cast<float>(x0 + static_cast<int>(c - first)), y, z, off);
     } else {
-      pop_t* src[Q];
-      pop_t* dst[Q];
-      segment_addresses<kOdd>(v, sg.link_mask, sg.reflection, off, src, dst);
 #pragma omp simd
-      for (std::size_t c = first; c < last; ++c)
+      for (std::size_t c = first; c < whole; ++c)
         update_segment_cell<kSmagorinsky, kForce, kStoreState>(v, c, static_cast<float>(x0 + static_cast<int>(c - first)), y, z, src, dst);
     }
+    if (whole < last)
+      update_segment_rest<kSmagorinsky, kForce, kStoreState>(whole, last, static_cast<float>(x0 + static_cast<int>(whole - first)), y, z,
+                                                             src, dst);
+  }
+
+  // The last cells [c0, c1) of a segment, fewer than kLanes, at positions x0, x0 + 1, ...: a loop with
+  // a variable count this short runs scalar (GCC 12 has no masked tails), and the LRM's rows leave
+  // 6 of their 38 bulk cells here at N = 32, which took two thirds of the fluid pass. So they are
+  // copied into kLanes lanes (the spare ones a fluid at rest), updated there by the same per-cell
+  // code in one vector pass, and copied back; a view whose per-cell arrays are those lanes
+  // (ncells = kLanes) serves the force field and the stored states.
+  template <bool kSmagorinsky, int kForce, bool kStoreState>
+  void update_segment_rest(std::size_t c0, std::size_t c1, float x0, float y, float z, pop_t* const src[Q], pop_t* const dst[Q]) {
+    const LatticeView& v = view_;
+    const std::size_t n = c1 - c0;
+    alignas(64) pop_t in[Q][kLanes], out[Q][kLanes];
+    alignas(64) float force[3][kLanes], aux[4][kLanes];
+    pop_t* lane_in[Q];
+    pop_t* lane_out[Q];
+    for (int i = 0; i < Q; ++i) {
+      lane_in[i] = in[i];
+      lane_out[i] = out[i];
+      copy_lanes(in[i], src[i] + c0, n, store_pop(0.0f));
+    }
+    LatticeView lanes = v;
+    lanes.ncells = kLanes;
+    lanes.force = v.force ? &force[0][0] : nullptr;
+    lanes.aux = &aux[0][0];
+    if (v.force)
+      for (int a = 0; a < 3; ++a) copy_lanes(force[a], v.force + a * v.ncells + c0, n, 0.0f);
+#pragma omp simd
+    for (std::size_t k = 0; k < kLanes; ++k)
+      update_segment_cell<kSmagorinsky, kForce, kStoreState>(lanes, k, x0 + static_cast<float>(k), y, z, lane_in, lane_out);
+    for (int i = 0; i < Q; ++i) store_lanes(dst[i] + c0, out[i], n);
+    if (kStoreState)
+      for (int a = 0; a < 4; ++a) store_lanes(v.aux + a * v.ncells + c0, aux[a], n);
+  }
+  // to[k] = from[k] for k < n, `spare` beyond; from[k] is not read for k >= n (masked loads).
+  template <class T>
+  static void copy_lanes(T* to, const T* from, std::size_t n, T spare) {
+#pragma omp simd
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      T x = spare;
+      if (k < n) x = from[k];
+      to[k] = x;
+    }
+  }
+  // to[k] = from[k] for k < n only (masked stores: the slots beyond belong to other cells).
+  template <class T>
+  static void store_lanes(T* to, const T* from, std::size_t n) {
+#pragma omp simd
+    for (std::size_t k = 0; k < kLanes; ++k)
+      if (k < n) to[k] = from[k];
   }
 
   template <bool kOdd, bool kSmagorinsky, int kForce>
@@ -411,6 +465,8 @@ class CpuSolver final : public Solver {
   std::vector<std::uint8_t> segment_forced_;
   // run_step's loops (segments, general cells, boundary states, boundary blocks, held cells) and their
   // chunks (a few dozen per thread's share at N = 32)
+  // update_segment's vector width: the AVX-512 registers' 16 floats (two passes of AVX2)
+  static constexpr std::size_t kLanes = 16;
   static constexpr long kSegmentChunk = 16, kGeneralChunk = 32, kBoundaryChunk = 128, kBlockChunk = 2, kHeldChunk = 32;
   TeamLoop loops_[5];
 };
