@@ -463,10 +463,10 @@ class CpuSolver final : public Solver {
   // Per bulk segment: 1 where a cell of it may hold a non-zero field force (set when one is set,
   // cleared only by set_force_field), so that segments without one skip the field.
   std::vector<std::uint8_t> segment_forced_;
-  // run_step's loops (segments, general cells, boundary states, boundary blocks, held cells) and their
-  // chunks (a few dozen per thread's share at N = 32)
   // update_segment's vector width: the AVX-512 registers' 16 floats (two passes of AVX2)
   static constexpr std::size_t kLanes = 16;
+  // run_step's loops (segments, general cells, boundary states, boundary blocks, held cells) and their
+  // chunks (a few dozen per thread's share at N = 32)
   static constexpr long kSegmentChunk = 16, kGeneralChunk = 32, kBoundaryChunk = 128, kBlockChunk = 2, kHeldChunk = 32;
   TeamLoop loops_[5];
 };
