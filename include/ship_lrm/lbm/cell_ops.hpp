@@ -66,17 +66,17 @@ SHIP_LRM_HD float lattice_dot(int i, const float v[3]) {
 // Discrete equilibrium, thesis eq. 6.8, minus the rest weight w_i, as its parts even and odd in c_i:
 // direction i has even + odd, its opposite (c = -c_i, same weight) even - odd, so the collision
 // evaluates the formula once per pair of directions. uu = |u|^2.
-struct EquilibriumParts {
+struct EvenOddParts {  // a per-direction term split into its parts even and odd in c_i
   float even, odd;
 };
-SHIP_LRM_HD EquilibriumParts equilibrium_parts(int i, float rho, const float u[3], float uu) {
+SHIP_LRM_HD EvenOddParts equilibrium_parts(int i, float rho, const float u[3], float uu) {
   const float cu = lattice_dot(i, u);
   const float w = d3q19::w(i);
   return {w * ((rho - 1.0f) + rho * (4.5f * cu * cu - 1.5f * uu)), i == 0 ? 0.0f : w * rho * (3.0f * cu)};
 }
 SHIP_LRM_HD float speed_squared(const float u[3]) { return u[0] * u[0] + u[1] * u[1] + u[2] * u[2]; }
 SHIP_LRM_HD float equilibrium(int i, float rho, const float u[3]) {
-  const EquilibriumParts e = equilibrium_parts(i, rho, u, speed_squared(u));
+  const EvenOddParts e = equilibrium_parts(i, rho, u, speed_squared(u));
   return e.even + e.odd;
 }
 
@@ -165,6 +165,16 @@ SHIP_LRM_HD float smagorinsky_omega(float nu, float s, float pi_norm_per_rho) {
   return 1.0f / (3.0f * (nu + s2 * S) + 0.5f);
 }
 
+// Guo et al. 2002 eq. 20, the forcing term of direction i: (1 - omega/2) w_i [ (c_i - u)/cs^2 +
+// (c_i.u) c_i / cs^4 ] . F, as its parts even and odd in c_i (as equilibrium_parts):
+// guo w_i (9 (c_i.u)(c_i.F) - 3 u.F) and guo w_i 3 c_i.F, with guo = 1 - omega/2 and uF = u.F.
+SHIP_LRM_HD EvenOddParts guo_source_parts(int i, const float u[3], const float F[3], float uF, float guo) {
+  const float gw = guo * d3q19::w(i);
+  if (i == 0) return {gw * (-3.0f * uF), 0.0f};
+  const float cu = lattice_dot(i, u), cF = lattice_dot(i, F);
+  return {gw * (9.0f * cu * cF - 3.0f * uF), gw * (3.0f * cF)};
+}
+
 // BGK collision (thesis eq. 6.9) with Smagorinsky (kSmagorinsky, s = p.smagorinsky) and Guo
 // forcing (force density F per unit volume, lattice units) about the state m that enters the
 // equilibrium (with the Guo half-force shift when forced). Overwrites g with the post-collision
@@ -176,21 +186,22 @@ SHIP_LRM_HD void relax(float g[Q], const Macro& m, const float force[3], const C
   const float guo = 1.0f - 0.5f * omega;
   const float uF = m.u[0] * force[0] + m.u[1] * force[1] + m.u[2] * force[2];
   const float uu = speed_squared(m.u);
-  // Guo et al. 2002 eq. 20: (1 - omega/2) w_i [ (c_i - u)/cs^2 + (c_i.u) c_i / cs^4 ] . F, whose parts
-  // even and odd in c_i are (1 - omega/2) w_i (9 (c_i.u)(c_i.F) - 3 u.F) and (1 - omega/2) w_i 3 c_i.F
-  g[0] += omega * (equilibrium_parts(0, m.rho, m.u, uu).even - g[0]) + (kForced ? guo * d3q19::w(0) * (-3.0f * uF) : 0.0f);
+  // (unforced, no source is added: x + 0.0f is not folded away under IEEE rules)
+  const float r0 = omega * (equilibrium_parts(0, m.rho, m.u, uu).even - g[0]);
+  g[0] += kForced ? r0 + guo_source_parts(0, m.u, force, uF, guo).even : r0;
   SHIP_LRM_UNROLL
   for (int i = 1; i <= 9; ++i) {
     const int o = d3q19::opp(i);
-    const EquilibriumParts e = equilibrium_parts(i, m.rho, m.u, uu);
-    float source_even = 0.0f, source_odd = 0.0f;
+    const EvenOddParts e = equilibrium_parts(i, m.rho, m.u, uu);
+    const float ri = omega * ((e.even + e.odd) - g[i]), ro = omega * ((e.even - e.odd) - g[o]);
     if (kForced) {
-      const float cu = lattice_dot(i, m.u), cF = lattice_dot(i, force);
-      source_even = guo * d3q19::w(i) * (9.0f * cu * cF - 3.0f * uF);
-      source_odd = guo * d3q19::w(i) * (3.0f * cF);
+      const EvenOddParts s = guo_source_parts(i, m.u, force, uF, guo);
+      g[i] += ri + (s.even + s.odd);
+      g[o] += ro + (s.even - s.odd);
+    } else {
+      g[i] += ri;
+      g[o] += ro;
     }
-    g[i] += omega * ((e.even + e.odd) - g[i]) + (source_even + source_odd);
-    g[o] += omega * ((e.even - e.odd) - g[o]) + (source_even - source_odd);
   }
 }
 // With the model chosen at run time (cells off the vectorised bulk path).
