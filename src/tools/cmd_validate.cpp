@@ -1,11 +1,110 @@
 // `ship_lrm validate cylinder`: the Schaefer & Turek 3D-1Z drag benchmark at a chosen resolution.
+// `ship_lrm validate stream-stability`: does a disturbed uniform stream stay uniform (stream_stability.hpp)?
+#include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "commands.hpp"
 #include "ship_lrm/lbm/cylinder_benchmark.hpp"
+#include "ship_lrm/lbm/stream_stability.hpp"
 
 namespace ship_lrm::tools {
+
+namespace {
+
+// "0.15,0.3" -> {0.15, 0.3}; CLI::ValidationError for anything else.
+std::vector<float> parse_machs(const std::string& text) {
+  std::vector<float> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    std::size_t used = 0;
+    float v = 0;
+    try {
+      v = std::stof(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != item.size() || !(v >= 0.0f && v <= lbm::kMaxSetupMach))
+      throw CLI::ValidationError("--mach", "'" + item + "' is not a Mach number in [0, " + std::to_string(lbm::kMaxSetupMach) + "]");
+    out.push_back(v);
+  }
+  if (out.empty()) throw CLI::ValidationError("--mach", "give at least one Mach number");
+  return out;
+}
+
+std::function<int()> add_stream_stability_command(CLI::App& validate) {
+  auto* cmd = validate.add_subcommand(
+      "stream-stability",
+      "A periodic box of uniform stream with a small disturbance: does the disturbance decay? (BGK near tau = 1/2 is unstable above a "
+      "lattice Mach number of a few tenths; Lallemand & Luo 2000)");
+  struct Opts {
+    std::string machs = "0.15,0.225,0.3";
+    float nu = 1.37e-7f;
+    float smagorinsky = 0.05f;
+    int size = 32;
+    long steps = 2000;
+    float amplitude = 1e-4f;
+    std::string seed = "random";
+    std::string backend = "auto";
+    std::string csv;
+  };
+  auto o = std::make_shared<Opts>();
+  cmd->add_option("--mach", o->machs, "stream speeds U / c_s, a comma list")->capture_default_str();
+  cmd->add_option("--nu", o->nu, "lattice viscosity (the LRM's for air: 1.37e-7 at N = 32, 6.8e-8 at N = 64)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--smagorinsky", o->smagorinsky, "Smagorinsky constant s (the LRM's: 0.05; 0: plain BGK)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--size", o->size, "cells per edge of the periodic box")->check(CLI::Range(4, 512))->capture_default_str();
+  cmd->add_option("--steps", o->steps, "steps per case")->check(CLI::Range(1L, 100000000L))->capture_default_str();
+  cmd->add_option("--amplitude", o->amplitude, "disturbance, lattice velocity units")->check(CLI::Range(1e-8, 1e-2))->capture_default_str();
+  cmd->add_option("--seed", o->seed, "random (every component) or shear (u_x + a sin(2 pi y / size), decays as exp(-nu k^2 t))")
+      ->check(CLI::IsMember({"random", "shear"}))
+      ->capture_default_str();
+  cmd->add_option("--backend", o->backend, "cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
+  cmd->add_option("--csv", o->csv, "also write every sample (mach, step, max |u - U|, seeded-mode amplitude) to this CSV file");
+  return [o, cmd]() -> int {
+    if (!cmd->parsed()) return -1;
+    const std::vector<float> machs = parse_machs(o->machs);
+    std::ofstream csv;
+    if (!o->csv.empty()) {
+      csv.open(o->csv);
+      if (!csv) throw lbm::ConfigError("validate stream-stability: cannot write " + o->csv);
+      csv << "mach,step,max_deviation,seeded_mode\n";
+    }
+    std::printf("%-6s %-10s %-12s %-12s %s\n", "Mach", "steps", "max|u-U| 0", "max|u-U| end", "verdict");
+    for (float mach : machs) {
+      lbm::StreamStabilityCase c;
+      c.size = o->size;
+      c.mach = mach;
+      c.nu = o->nu;
+      c.smagorinsky = o->smagorinsky;
+      c.amplitude = o->amplitude;
+      c.seed = o->seed == "shear" ? lbm::StreamStabilityCase::Seed::ShearWave : lbm::StreamStabilityCase::Seed::Random;
+      c.steps = o->steps;
+      c.sample_interval = std::max(1L, o->steps / 8);
+      c.backend = lbm::parse_backend(o->backend);
+      const lbm::StreamStabilityResult r = lbm::run_stream_stability(c);
+      for (const auto& s : r.samples) csv << mach << ',' << s.step << ',' << s.max_deviation << ',' << s.shear_amplitude << '\n';
+      const auto& first = r.samples.front();
+      const double U = mach / std::sqrt(3.0);
+      if (r.diverged) {
+        std::printf("%-6.3f %-10ld %-12.3e %-12s diverged at step %ld\n", mach, r.diverged_at, first.max_deviation, "-", r.diverged_at);
+        continue;
+      }
+      const auto& last = r.samples.back();
+      std::printf("%-6.3f %-10ld %-12.3e %-12.3e %s (x %.3g; %.2g %% of U)\n", mach, last.step, first.max_deviation, last.max_deviation,
+                  r.growth() > 1.0 ? "GROWS" : "decays", r.growth(), U > 0 ? 100.0 * last.max_deviation / U : 0.0);
+    }
+    return 0;
+  };
+}
+
+}  // namespace
 
 std::function<int()> add_validate_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("validate", "Validation cases of the LBM core");
@@ -27,7 +126,9 @@ std::function<int()> add_validate_command(CLI::App& app) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cyl->add_option("--vti", o->vti, "write the final flow field to this .vti file (ParaView)");
-  return [o, cyl]() -> int {
+  auto stability = add_stream_stability_command(*cmd);
+  return [o, cyl, stability]() -> int {
+    if (const int r = stability(); r >= 0) return r;
     if (!cyl->parsed()) return -1;
     const auto r = lbm::run_cylinder_benchmark(
         o->resolution, lbm::parse_backend(o->backend), o->max_steps, o->tolerance,
