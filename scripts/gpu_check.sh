@@ -48,6 +48,9 @@ bench="$bin/ship_lrm"
   $bench bench lrm --backend cuda --N 64 --reach 1.25 --seconds 5 --json || true   # issue 4 target: <= 0.05
   $bench bench lrm --backend cuda --N 128 --reach 1.25 --seconds 2 --json || true
 } | tee "$out/bench.jsonl"
+# the collision's stability in a disturbed stream on the device (the same table as the CPU's: the
+# backends are bit-identical; docs/benchmarks.md, "Stream stability of the collision")
+$bench validate stream-stability --backend cuda --mach 0.15,0.225,0.3 2>&1 | tee "$out/stream_stability.log" || true
 # issue 5: precompute MLUPS on the GPU (1/50 model at rest, N = 96) and the cost of serving the faces of
 # an N = 64 LRM domain from the default table (made here on the GPU)
 wake_dir="$(mktemp -d)"
