@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "commands.hpp"
 #include "ship_lrm/lbm/cylinder_benchmark.hpp"
@@ -13,27 +12,6 @@
 namespace ship_lrm::tools {
 
 namespace {
-
-// "0.15,0.3" -> {0.15, 0.3}; CLI::ValidationError for anything else.
-std::vector<float> parse_machs(const std::string& text) {
-  std::vector<float> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    std::size_t used = 0;
-    float v = 0;
-    try {
-      v = std::stof(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != item.size() || !(v >= 0.0f && v <= lbm::kMaxSetupMach))
-      throw CLI::ValidationError("--mach", "'" + item + "' is not a Mach number in [0, " + std::to_string(lbm::kMaxSetupMach) + "]");
-    out.push_back(v);
-  }
-  if (out.empty()) throw CLI::ValidationError("--mach", "give at least one Mach number");
-  return out;
-}
 
 std::function<int()> add_stream_stability_command(CLI::App& validate) {
   auto* cmd = validate.add_subcommand(
@@ -69,7 +47,7 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
   cmd->add_option("--csv", o->csv, "also write every sample (mach, step, max |u - U|, seeded-mode amplitude) to this CSV file");
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
-    const std::vector<float> machs = parse_machs(o->machs);
+    const std::vector<double> machs = parse_number_list(o->machs, "--mach", 0.0, lbm::kMaxSetupMach, "");
     std::ofstream csv;
     if (!o->csv.empty()) {
       csv.open(o->csv);
@@ -77,10 +55,10 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
       csv << "mach,step,max_deviation,seeded_mode\n";
     }
     std::printf("%-6s %-10s %-12s %-12s %s\n", "Mach", "steps", "max|u-U| 0", "max|u-U| end", "verdict");
-    for (float mach : machs) {
+    for (double mach : machs) {
       lbm::StreamStabilityCase c;
       c.size = o->size;
-      c.mach = mach;
+      c.mach = static_cast<float>(mach);
       c.nu = o->nu;
       c.smagorinsky = o->smagorinsky;
       c.amplitude = o->amplitude;

@@ -14,6 +14,9 @@ namespace ship_lrm::tools {
 std::function<int()> add_bench_command(CLI::App& app);
 std::function<int()> add_units_command(CLI::App& app);
 std::function<int()> add_validate_command(CLI::App& app);
+// "0:5:70" (start:step:stop) or "0,10,25", 1 to 400 values in lo..hi; CLI::ValidationError naming
+// `option` otherwise (number_list.cpp).
+std::vector<double> parse_number_list(const std::string& text, const std::string& option, double lo, double hi, const std::string& unit);
 #ifdef SHIP_LRM_HAVE_FLIGHT
 std::function<int()> add_trim_command(CLI::App& app);
 std::function<int()> add_doublet_command(CLI::App& app);
@@ -23,7 +26,7 @@ std::function<int()> add_approach_command(CLI::App& app);
 // Where `ship_lrm wake --preset default` keeps its table: $SHIP_LRM_WAKE_CACHE or ~/.cache/ship_lrm.
 
 // Shared by the sweep commands (cmd_flight.cpp):
-// "0:5:70" (start:step:stop) or "0,10,25" in 0..100 m/s; CLI::ValidationError otherwise.
+// parse_number_list in 0..100 m/s as --speeds.
 std::vector<double> parse_speeds(const std::string& text);
 // Creates dir; refuses to overwrite an existing file of `names` unless overwrite is set.
 void prepare_output(const std::filesystem::path& dir, const std::vector<std::string>& names, bool overwrite);

@@ -1,8 +1,6 @@
-// Shared helpers of the sweep commands: speed lists, output directories, plotting.
-#include <cmath>
+// Shared helpers of the sweep commands: speed lists (number_list.cpp), output directories, plotting.
 #include <cstdlib>
 #include <iostream>
-#include <sstream>
 
 #include "commands.hpp"
 #include "ship_lrm/flight/parameters.hpp"
@@ -10,37 +8,7 @@
 namespace ship_lrm::tools {
 namespace fs = std::filesystem;
 
-std::vector<double> parse_speeds(const std::string& text) {
-  std::vector<double> v;
-  const auto num = [&](const std::string& s) {
-    size_t pos = 0;
-    double x = 0;
-    try {
-      x = std::stod(s, &pos);
-    } catch (const std::exception&) {
-      pos = 0;
-    }
-    if (pos != s.size() || !std::isfinite(x)) throw CLI::ValidationError("--speeds", "'" + s + "' is not a number");
-    return x;
-  };
-  if (text.find(':') != std::string::npos) {
-    std::stringstream ss(text);
-    std::string a, b, c;
-    if (!std::getline(ss, a, ':') || !std::getline(ss, b, ':') || !std::getline(ss, c) || c.find(':') != std::string::npos)
-      throw CLI::ValidationError("--speeds", "expected start:step:stop, e.g. 0:5:70");
-    const double start = num(a), step = num(b), stop = num(c);
-    if (step <= 0 || stop < start) throw CLI::ValidationError("--speeds", "needs step > 0 and stop >= start");
-    for (int i = 0; start + i * step <= stop + 1e-9; ++i) v.push_back(start + i * step);
-  } else {
-    std::stringstream ss(text);
-    std::string a;
-    while (std::getline(ss, a, ',')) v.push_back(num(a));
-  }
-  if (v.empty() || v.size() > 400) throw CLI::ValidationError("--speeds", "needs 1 to 400 speeds");
-  for (double x : v)
-    if (x < 0 || x > 100) throw CLI::ValidationError("--speeds", "speeds must lie in 0..100 m/s");
-  return v;
-}
+std::vector<double> parse_speeds(const std::string& text) { return parse_number_list(text, "--speeds", 0.0, 100.0, "m/s"); }
 
 // Refuses to overwrite a user's files unless asked to.
 void prepare_output(const fs::path& dir, const std::vector<std::string>& names, bool overwrite) {
