@@ -1,5 +1,6 @@
 // `ship_lrm validate cylinder`: the Schaefer & Turek 3D-1Z drag benchmark at a chosen resolution.
 // `ship_lrm validate stream-stability`: does a disturbed uniform stream stay uniform (stream_stability.hpp)?
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
