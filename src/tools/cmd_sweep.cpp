@@ -141,13 +141,6 @@ void add_plane_outputs(std::vector<std::string>& names, const std::string& stem)
   names.push_back(stem + ".png");
 }
 
-// The forward-flight ground sweep's default lattice velocity (m/s mapped to Mach 0.3): twice the
-// thesis' 30 m/s. At 30 m/s the corner where the inflow face meets the ground, which moves at the
-// stream's speed, seeds a grid-scale mode that the BGK bulk, near its stability limit at the LRM's
-// relaxation time, carries along the ground; the ratios then jump about with height (N = 32 and 64,
-// docs/benchmarks.md "Stream stability of the collision and the ground corner's mode").
-constexpr double kForwardGroundLatticeVelocity = 60.0;
-
 std::function<int()> add_ground_sweep(CLI::App& sweep) {
   auto* ground = sweep.add_subcommand(
       "ground",
@@ -161,7 +154,7 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
   ground
       ->add_option("--mode", o->mode,
                    "hover (heights swept) or forward (speeds swept at each height; there --lattice-velocity defaults to " +
-                       tag(kForwardGroundLatticeVelocity) + ")")
+                       tag(lrm::kForwardGroundLatticeVelocity) + ")")
       ->check(CLI::IsMember({"hover", "forward"}))
       ->capture_default_str();
   ground->add_option("--heights", o->heights,
@@ -177,7 +170,7 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
     for (double h : heights)
       if (!(h > 0)) throw lbm::ConfigError("--heights: z/R must be > 0, got " + std::to_string(h));
     if (!hover && ground->get_option("--lattice-velocity")->count() == 0) {
-      o->lattice_velocity = kForwardGroundLatticeVelocity;
+      o->lattice_velocity = lrm::kForwardGroundLatticeVelocity;
       std::cout << "forward flight in ground effect: lattice velocity " << o->lattice_velocity
                 << " m/s (half the thesis' lattice Mach number; --lattice-velocity sets it)\n";
     }

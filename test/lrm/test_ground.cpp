@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "lrm_test_config.hpp"
 #include "ship_lrm/lrm/inflow_sweep.hpp"
@@ -94,7 +95,7 @@ TEST(Ground, ForwardFlightAt6MetresPerSecondHasAGroundEffectThatFadesWithHeight)
   // in forward flight (fig. 8.11). Physics asks for two things at low speed (6 m/s, V / v_h = 0.5,
   // where Cheeseman-Bennett gives 0.81 at z/R = 0.5 and 0.95 at z/R = 1): the inflow is reduced
   // (ratio below 1) and the reduction fades with height (the thesis, 8.2.3: a monotonically
-  // increasing inflow). At 15 m/s the LRM still fails the second (docs/benchmarks.md).
+  // increasing inflow). 15 m/s: the next test.
   lrm::IsolatedRotorCase c;
   c.speed = 6.0;
   c.settle = 3.0;
@@ -107,6 +108,33 @@ TEST(Ground, ForwardFlightAt6MetresPerSecondHasAGroundEffectThatFadesWithHeight)
   const double high = lrm::run_isolated_rotor(cfg, c).induced_mean / oge.induced_mean;
   EXPECT_LT(low, high);
   EXPECT_LT(high, 1.0);
+}
+
+TEST(Ground, ForwardFlightAt15MetresPerSecondRisesMonotonicallyWithHeightAtTheSweepsLatticeVelocity) {
+  // Issue 4, acceptance 4, quick variant (N = 32) at 15 m/s, where Cheeseman-Bennett's ratio rises
+  // with height (0.945, 0.962, 0.979 at z/R 0.5, 0.6, 0.8). At the thesis' lattice velocity (30 m/s)
+  // a grid-scale mode from the corner where the inflow face meets the moving ground made the LRM's
+  // jump about (0.43, 1.03, 0.60 with the rotor's far field at the faces; this test fails there); at
+  // the forward ground sweep's lattice velocity (kForwardGroundLatticeVelocity, half the Mach number)
+  // it must rise with height and stay below 1 (measured 0.70, 0.77, 0.83: steps of 0.06 - 0.07, the
+  // ratios' uncertainty from the averaging window 0.003).
+  lrm::LrmConfig base = quick_config();
+  base.reference_velocity = lrm::kForwardGroundLatticeVelocity;
+  base.rotor_far_field = true;
+  lrm::IsolatedRotorCase c;
+  c.speed = 15.0;
+  c.settle = 3.0;
+  c.average = 1.0;
+  const lrm::LrmConfig cfg = lrm::config_for_stream(base, c.speed);
+  const double oge = lrm::run_isolated_rotor(cfg, c).induced_mean;
+  std::vector<double> ratio;
+  for (double z_over_R : {0.5, 0.6, 0.8}) {
+    c.ground_height = z_over_R * cfg.radius;
+    ratio.push_back(lrm::run_isolated_rotor(cfg, c).induced_mean / oge);
+  }
+  EXPECT_LT(ratio[0], ratio[1]);
+  EXPECT_LT(ratio[1], ratio[2]);
+  EXPECT_LT(ratio[2], 1.0);
 }
 
 TEST(Fuselage, VoxelisedVolumeMatchesTheShapeAndItStaysBelowTheDisk) {

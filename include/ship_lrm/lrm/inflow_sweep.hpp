@@ -19,6 +19,14 @@ struct IsolatedRotorCase {
   bool centre_plane = false;  // also average the x-z plane through the hub (IsolatedRotorResult::centre_plane)
 };
 
+// The lattice velocity (m/s mapped to Mach 0.3, LrmConfig::reference_velocity) for forward flight in
+// ground effect: twice the thesis' 30 m/s. At 30 m/s the corner where the inflow face meets the
+// ground, which moves at the stream's speed, seeds a grid-scale mode that the BGK bulk, near its
+// stability limit at the LRM's relaxation time, carries along the ground, and v_IGE / v_OGE jumps
+// about with height (N = 32 and 64; docs/benchmarks.md, "Stream stability of the collision and the
+// ground corner's mode").
+constexpr double kForwardGroundLatticeVelocity = 60.0;
+
 // Algebraic ground-effect models at equal thrust, induced velocity in / out of ground effect for the
 // rotor at height z over the ground (REFERENCE.md; thesis figs. 8.9-8.11):
 // Cheeseman & Bennett 1955 (ARC R&M 3021), with its forward-flight form (Johnson, Rotorcraft
