@@ -40,6 +40,7 @@ lbm::Lattice make_lattice(const LrmConfig& c, const lbm::UnitConverter& u, int e
     // Poinsot & Lele's (1992) K = sigma (1 - M^2) c / L in lattice units (c_s per step, L = the edge in cells); the stream's
     // Mach number is that of the reference velocity at most
     const double mach = u.mach_number();
+    lc.faces[f].total_pressure_inflow = c.entraining_pressure_faces && c.faces[f] == lbm::FaceType::PressureOutlet;
     if (c.faces[f] == lbm::FaceType::ImpedanceOutlet)
       lc.faces[f].pressure_relaxation = static_cast<float>(c.outlet_sigma[f] * (1.0 - mach * mach) / std::sqrt(3.0) / (edge - 1));
   }
@@ -287,6 +288,13 @@ void LrmDomain::set_stream(const Vec3& air) {
 void LrmDomain::set_motion(const Motion& m) {
   for (const Vec3* v : {&m.air_velocity, &m.omega, &m.omega_dot, &m.hub_acceleration})
     if (!v->allFinite()) throw lbm::ConfigError("LRM: the domain motion is not finite");
+  const bool holds_air = std::any_of(cfg_.faces.begin(), cfg_.faces.end(), [](lbm::FaceType f) {
+    return f == lbm::FaceType::VelocityInlet || f == lbm::FaceType::ImpedanceOutlet;
+  });
+  if (!holds_air && (m.air_velocity.norm() > 0 || m.omega.norm() > 0))
+    throw lbm::ConfigError("LRM: all six faces are pressure faces, which hold only air at rest; a stream (here " +
+                           std::to_string(m.air_velocity.norm()) +
+                           " m/s) or a turning domain needs a velocity face (e.g. the front: --faces ambient-sides) or impedance faces");
   // with a face grid the faces do not use air_velocity (set_face_grid)
   const bool far_field_changed = update_far_field(m.air_velocity);
   const bool faces_same =
@@ -434,6 +442,7 @@ bool LrmDomain::update_far_field(const Vec3& air) {
     std::optional<rotor::VortexCylinderWake> built;
     try {
       built.emplace(cfg_.radius, thrust, cfg_.density, air, units_.dx());
+      if (far_field_ground_ < std::numeric_limits<double>::infinity()) built->set_ground(far_field_ground_ - disk_centre.z());
     } catch (const std::invalid_argument& e) {
       throw lbm::ConfigError(std::string("LRM: the rotor's far field at the faces: ") + e.what());
     }
@@ -448,6 +457,15 @@ bool LrmDomain::update_far_field(const Vec3& air) {
   far_field_air_ = air;
   far_field_stale_ = false;
   return true;
+}
+
+void LrmDomain::set_far_field_ground(double height) {
+  const double disk = (disk_layer_ - centre_) * units_.dx();  // the disk's cell layer below the hub
+  if (!(height > disk) && !(height == std::numeric_limits<double>::infinity()))
+    throw lbm::ConfigError("LRM: the rotor far field's ground plane must lie below the disk (" + std::to_string(disk) +
+                           " m below the hub), not " + std::to_string(height) + " m");
+  far_field_ground_ = height;
+  far_field_stale_ = true;
 }
 
 void LrmDomain::set_rotor_forces(const rotor::RotorForceHarmonics& h) {

@@ -33,6 +33,7 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
     const double centre = 0.5 * (d.cells_per_edge() - 1);
     const double k0 = std::floor(centre + c.ground_height / d.units().dx()) + 1.0;
     r.ground_effective_height = (k0 - 0.5 - centre) * d.units().dx();
+    if (cfg.rotor_far_field) d.set_far_field_ground(r.ground_effective_height);
   }
   d.restart_flow();
   rotor::RotorForceHarmonics h;

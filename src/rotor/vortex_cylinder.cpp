@@ -48,8 +48,22 @@ Vec3 VortexCylinderWake::velocity(const Vec3& p) const {
   // circulation per unit length of axis is T / (rho A |V_w|) = 2 v by momentum theory.
   const double gamma_ds = 2.0 * v_ * ds_;
   Vec3 u = Vec3::Zero();
-  for (int k = 0; k < rings_; ++k) u += vortex_ring_velocity(radius_, gamma_ds, p - (k + 0.5) * ds_ * d_, core2_);
+  for (int k = 0; k < rings_; ++k) {
+    const Vec3 c = (k + 0.5) * ds_ * d_;
+    if (c.z() >= ground_) continue;  // cut at the ground
+    u += vortex_ring_velocity(radius_, gamma_ds, p - c, core2_);
+    if (ground_ < std::numeric_limits<double>::infinity()) {
+      // the mirror image: a ring in the plane z = 2 g - c_z, circulating the other way
+      const Vec3 image(c.x(), c.y(), 2.0 * ground_ - c.z());
+      u += vortex_ring_velocity(radius_, -gamma_ds, p - image, core2_);
+    }
+  }
   return u;
+}
+
+void VortexCylinderWake::set_ground(double height) {
+  if (!(height > 0)) throw std::invalid_argument("vortex-cylinder wake: the ground must lie below the disk (height > 0 m)");
+  ground_ = height;
 }
 
 }  // namespace ship_lrm::rotor

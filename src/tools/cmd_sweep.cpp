@@ -18,23 +18,34 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Face set-ups of the LRM domain for the isolated-rotor sweeps (issue 4, acceptances 2 and 4).
-std::array<lbm::FaceType, 6> faces_named(const std::string& name) {
-  lrm::LrmConfig c;
-  if (name == "thesis") return c.faces;  // velocity front, left, right; impedance back, top, bottom
-  if (name == "open") {                  // impedance on all six (the author's earlier set-up, thesis 8.2.3)
-    c.faces.fill(lbm::FaceType::ImpedanceOutlet);
-    return c.faces;
+// Face set-ups of the LRM domain for the isolated-rotor sweeps (issue 4, acceptances 2 and 4), applied
+// to cfg's faces.
+void apply_faces(const std::string& name, lrm::LrmConfig& cfg) {
+  const lrm::LrmConfig thesis;
+  cfg.faces = thesis.faces;  // velocity front, left, right; impedance back, top, bottom
+  cfg.entraining_pressure_faces = false;
+  if (name == "thesis") return;
+  if (name == "open") {  // impedance on all six (the author's earlier set-up, thesis 8.2.3)
+    cfg.faces.fill(lbm::FaceType::ImpedanceOutlet);
+    return;
   }
   if (name == "open-sides") {  // velocity front only: the wall jet may leave sideways
-    c.faces[2] = c.faces[3] = lbm::FaceType::ImpedanceOutlet;
-    return c.faces;
+    cfg.faces[2] = cfg.faces[3] = lbm::FaceType::ImpedanceOutlet;
+    return;
   }
   if (name == "pressure") {  // velocity front and sides; pressure outlets (ambient density) back, top, bottom
-    for (int f : {0, 4, 5}) c.faces[f] = lbm::FaceType::PressureOutlet;
-    return c.faces;
+    for (int f : {0, 4, 5}) cfg.faces[f] = lbm::FaceType::PressureOutlet;
+    return;
   }
-  throw lbm::ConfigError("unknown face set-up '" + name + "' (thesis, open-sides, open or pressure)");
+  if (name == "ambient" || name == "ambient-sides") {
+    // entraining pressure faces (LrmConfig::entraining_pressure_faces) on all six faces, or on all
+    // but the front, which stays a velocity face and holds the stream
+    cfg.faces.fill(lbm::FaceType::PressureOutlet);
+    if (name == "ambient-sides") cfg.faces[1] = lbm::FaceType::VelocityInlet;
+    cfg.entraining_pressure_faces = true;
+    return;
+  }
+  throw lbm::ConfigError("unknown face set-up '" + name + "' (thesis, open-sides, open, pressure, ambient or ambient-sides)");
 }
 
 // Options both isolated-rotor sweeps share: the domain, the rotor's load and averaging, the output.
@@ -60,8 +71,9 @@ struct IsolatedRotorOptions {
         ->capture_default_str();
     cmd.add_option("--faces", faces,
                    "face set-up: thesis (velocity front/sides), open-sides, open (impedance everywhere), pressure (pressure outlets "
-                   "back/top/bottom)")
-        ->check(CLI::IsMember({"thesis", "open-sides", "open", "pressure"}))
+                   "back/top/bottom), ambient (entraining pressure faces everywhere: air leaves at the ambient pressure and enters "
+                   "from rest; hover only), ambient-sides (velocity front, entraining pressure faces elsewhere)")
+        ->check(CLI::IsMember({"thesis", "open-sides", "open", "pressure", "ambient", "ambient-sides"}))
         ->capture_default_str();
     cmd.add_option("--outlet-sigma", outlet_sigma,
                    "impedance faces: relaxation of their pressure to the ambient (Poinsot & Lele 1992 sigma; 0: the thesis' outlet)")
@@ -97,7 +109,7 @@ struct IsolatedRotorOptions {
     cfg.reach = reach;
     cfg.reference_velocity = lattice_velocity;
     cfg.backend = lbm::parse_backend(backend);
-    cfg.faces = faces_named(faces);
+    apply_faces(faces, cfg);
     const std::vector<std::string> names = {"back", "front", "left", "right", "top", "bottom"};
     for (const auto& f : relaxed_faces) cfg.outlet_sigma[std::find(names.begin(), names.end(), f) - names.begin()] = outlet_sigma;
     cfg.rotor_far_field = far_field;
@@ -153,7 +165,8 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
   ground->add_flag("--fuselage", o->fuselage, "add the Bo 105-like fuselage (walls.hpp) below the disk");
   ground
       ->add_option("--mode", o->mode,
-                   "hover (heights swept) or forward (speeds swept at each height; there --lattice-velocity defaults to " +
+                   "hover (heights swept; there --faces defaults to ambient) or forward (speeds swept at each height; there "
+                   "--lattice-velocity defaults to " +
                        tag(lrm::kForwardGroundLatticeVelocity) + ")")
       ->check(CLI::IsMember({"hover", "forward"}))
       ->capture_default_str();
@@ -169,6 +182,11 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
     const auto speeds = hover ? std::vector<double>{0.0} : parse_speeds(o->speeds);
     for (double h : heights)
       if (!(h > 0)) throw lbm::ConfigError("--heights: z/R must be > 0, got " + std::to_string(h));
+    if (hover && ground->get_option("--faces")->count() == 0) {
+      o->faces = "ambient";
+      std::cout << "hover in ground effect: faces ambient (entraining pressure faces; the thesis' faces hold the wall jet in: "
+                   "--faces thesis)\n";
+    }
     if (!hover && ground->get_option("--lattice-velocity")->count() == 0) {
       o->lattice_velocity = lrm::kForwardGroundLatticeVelocity;
       std::cout << "forward flight in ground effect: lattice velocity " << o->lattice_velocity

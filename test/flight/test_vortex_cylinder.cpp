@@ -53,6 +53,31 @@ TEST(VortexCylinder, EdgewiseTheCentreHasGlauertsVelocityAndColemansGradient) {
   }
 }
 
+// Over a ground plane h below the disk the wake is cut at the ground and mirrored in it with the
+// opposite circulation (Knight & Hegner 1941). On the axis a cylinder of rings between distances z1
+// and z2 from the point induces (gamma / 2) (z2 / sqrt(z2^2 + R^2) - z1 / sqrt(z1^2 + R^2)), so with
+// gamma = 2 v the disk's centre sees v (2h / sqrt(h^2 + R^2) - 2h / sqrt(4h^2 + R^2)): 0.520 v at
+// h = R. No flow crosses the ground, in hover and with the wake skewed.
+TEST(VortexCylinder, OverGroundTheImageCylinderGivesTheClosedFormOnTheAxisAndNoFlowThroughTheGround) {
+  const double vh = hover_induced_velocity(kT, kRho, kR);
+  for (double h_over_R : {0.5, 1.0, 2.0}) {
+    VortexCylinderWake w(kR, kT, kRho, Vec3::Zero(), 0.0, 0.01, 400.0);
+    const double h = h_over_R * kR;
+    w.set_ground(h);
+    const double expected = vh * (2 * h / std::hypot(h, kR) - 2 * h / std::hypot(2 * h, kR));
+    EXPECT_NEAR(w.velocity(Vec3::Zero()).z(), expected, 1e-3 * vh) << h_over_R;
+    for (double x : {0.0, 0.5, 1.5, 3.0})  // inside the wake and outside it
+      EXPECT_NEAR(w.velocity(Vec3(x * kR, 0.3 * kR, h)).z(), 0.0, 1e-9 * vh) << h_over_R << " " << x;
+    // outside the wake the air leaves along the ground
+    EXPECT_GT(w.velocity(Vec3(1.5 * kR, 0, 0.95 * h)).x(), 0.0) << h_over_R;
+  }
+  VortexCylinderWake skewed(kR, kT, kRho, Vec3(-12.0, 0, 0), 0.0, 0.02, 400.0);
+  skewed.set_ground(kR);
+  for (double x : {-4.0, -1.0, 0.0, 1.0, 3.0}) EXPECT_NEAR(skewed.velocity(Vec3(x * kR, 0.2 * kR, kR)).z(), 0.0, 1e-9 * vh) << x;
+  EXPECT_THROW(skewed.set_ground(0.0), std::invalid_argument);
+  EXPECT_THROW(skewed.set_ground(std::nan("")), std::invalid_argument);
+}
+
 TEST(VortexCylinder, BadInputIsRefused) {
   EXPECT_THROW(VortexCylinderWake(0.0, kT, kRho, Vec3::Zero(), 0.0), std::invalid_argument);
   EXPECT_THROW(VortexCylinderWake(kR, -1.0, kRho, Vec3::Zero(), 0.0), std::invalid_argument);

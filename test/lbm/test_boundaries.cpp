@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numeric>
 
 #include "flow_cases.hpp"
@@ -136,6 +137,15 @@ TEST(OpenBoundaries, InletValuesPerCellAtRunTime) {
 // the duct's mass (L d rho / dt = rho (u_in - u_out)) and the outlet's relation per step
 // (c_s^2 d rho - rho c_s d u = -K c_s^2 (rho - 1)): c_s L lambda^2 - c_s^2 lambda + K c_s^2 = 0.
 namespace {
+// A CPU solver for cfg started with the uniform stream U along x in every cell.
+std::unique_ptr<Solver> started_with_stream(const LatticeConfig& cfg, float U) {
+  auto s = make_cpu_solver(Lattice(cfg));
+  std::vector<float> u(3 * s->lattice().cells(), 0.0f);
+  for (std::size_t c = 0; c < s->lattice().cells(); ++c) u[3 * c] = U;
+  s->initialize({}, u);
+  return s;
+}
+
 struct DuctAfterInletStep {
   double early = 0, late = 0;  // mean density - 1 over the duct, 500 and 5500 steps after the step
 };
@@ -145,10 +155,7 @@ DuctAfterInletStep duct_after_inlet_step(int nx, float U0, float U1, float relax
   cfg.faces[0].velocity = {U0, 0, 0};
   cfg.faces[1].type = FaceType::ImpedanceOutlet;
   cfg.faces[1].pressure_relaxation = relaxation;
-  auto s = make_cpu_solver(Lattice(cfg));
-  std::vector<float> u(3 * s->lattice().cells(), 0.0f);
-  for (std::size_t c = 0; c < s->lattice().cells(); ++c) u[3 * c] = U0;
-  s->initialize({}, u);
+  auto s = started_with_stream(cfg, U0);
   s->step(200);
   const auto& cells = s->lattice().boundary_cells();
   std::vector<float> values = s->boundary_values();
@@ -205,6 +212,73 @@ TEST(OpenBoundaries, ImpedanceOutletRelaxationOutsideItsRangeIsRefused) {
   EXPECT_THROW(Lattice{cfg}, ConfigError);
   cfg.faces[1].pressure_relaxation = std::nanf("");
   EXPECT_THROW(Lattice{cfg}, ConfigError);
+}
+
+// The entraining pressure face (FaceCondition::total_pressure_inflow). A duct of uniform flow U
+// between a velocity face and an entraining face: where the air leaves through the entraining face
+// it holds the ambient density; where the air enters through it, the air has come from rest, so
+// Bernoulli's p + rho U^2 / 2 = p_ambient gives rho = 1 - U^2 / (2 c_s^2) = 1 - 1.5 U^2 in the whole
+// duct. A plain pressure outlet holds rho = 1 either way.
+namespace {
+double duct_density(float U, bool entrain) {
+  const int nx = 30;
+  LatticeConfig cfg = periodic_config(nx, 3, 3, 0.1f);
+  // U > 0: the air enters at the velocity face (x = 0) and leaves through the pressure face;
+  // U < 0: it enters through the pressure face and the velocity face draws it out
+  cfg.faces[0].type = FaceType::VelocityInlet;
+  cfg.faces[0].velocity = {U, 0, 0};
+  cfg.faces[1].type = FaceType::PressureOutlet;
+  cfg.faces[1].total_pressure_inflow = entrain;
+  auto s = started_with_stream(cfg, U);
+  s->step(10000);  // the start's pressure wave has died away (nu k^2 t = 0.1 (pi / 29)^2 10000 = 12)
+  const Fields f = s->fields();
+  const std::size_t mid = s->lattice().index(nx / 2, 1, 1);
+  EXPECT_NEAR(f.u[3 * mid], U, 1e-5 + 1e-3 * std::abs(U));
+  return f.rho[mid];
+}
+}  // namespace
+
+TEST(OpenBoundaries, EntrainingPressureFaceHoldsTheAmbientWhereAirLeavesAndBernoullisPressureWhereItEnters) {
+  const float U = 0.05f;
+  const double bernoulli = 1.0 - 1.5 * U * U;  // 0.99625
+  const double entering = duct_density(-U, true), leaving = duct_density(U, true);
+  RecordProperty("density_entering", std::to_string(entering));
+  RecordProperty("density_bernoulli", std::to_string(bernoulli));
+  EXPECT_NEAR(entering, bernoulli, 0.01 * (1.0 - bernoulli));
+  EXPECT_NEAR(leaving, 1.0, 1e-5);
+  EXPECT_NEAR(duct_density(-U, false), 1.0, 1e-5);  // the plain pressure outlet
+}
+
+// Pressure faces on both ends of a duct leave a uniform drift U through it undamped (any uniform
+// flow has the same pressure everywhere): the frame is not pinned. With entraining faces the drift
+// enters at 1.5 U^2 below the density at which it leaves, a pressure drop U^2 / 2 over the duct's
+// length L, so rho L dU/dt = -rho U^2 / 2 and U(t) = U0 / (1 + U0 t / (2 L)) (the entrance loss of a
+// duct drawing from still air, Borda-Carnot; here with nothing else to hold the flow).
+TEST(OpenBoundaries, EntrainingPressureFacesStopAUniformDriftAtTheRateOfTheirEntranceLoss) {
+  const int nx = 40;
+  const float U0 = 0.05f;
+  auto drift = [&](bool entrain, long steps) {
+    LatticeConfig cfg = periodic_config(nx, 3, 3, 0.02f);
+    for (int f : {0, 1}) {
+      cfg.faces[f].type = FaceType::PressureOutlet;
+      cfg.faces[f].total_pressure_inflow = entrain;
+    }
+    auto s = started_with_stream(cfg, U0);
+    s->step(steps);
+    const Fields f = s->fields();
+    double mean = 0;
+    for (int x = 0; x < nx; ++x) mean += f.u[3 * s->lattice().index(x, 1, 1)] / nx;
+    return mean;
+  };
+  const double L = nx - 1;  // between the two face layers
+  for (long t : {2000L, 6000L}) {
+    const double expected = U0 / (1.0 + U0 * t / (2.0 * L));
+    const double measured = drift(true, t);
+    RecordProperty("drift_" + std::to_string(t), std::to_string(measured));
+    RecordProperty("drift_expected_" + std::to_string(t), std::to_string(expected));
+    EXPECT_NEAR(measured, expected, 0.01 * expected) << "t = " << t;
+  }
+  EXPECT_NEAR(drift(false, 6000), U0, 0.01 * U0);  // plain pressure faces keep the drift
 }
 
 // The impedance outlet's density (thesis eq. 6.15 with the Zou-He relation rho (1 + u_n) = K), now

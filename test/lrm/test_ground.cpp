@@ -90,6 +90,37 @@ TEST(Ground, HoverAtHalfARadiusLiesBetweenCheesemanBennettAndHayden) {
   EXPECT_LT(ratio, lrm::cheeseman_bennett_ratio(0.5, 0.0, 1.0));
 }
 
+TEST(Ground, HoverWithEntrainingFacesStaysBelowOneWhereTheThesisFailed) {
+  // Issue 4, acceptance 4, quick variant (N = 32, a = 1.25). The thesis' LRM (fig. 8.9), and this one
+  // with the thesis' faces, put v_IGE / v_OGE above 1 from z/R = 0.8 up (N = 32: 1.077 at z/R = 1):
+  // the velocity side faces hold still air, a wall for the ground's wall jet, which turns up along
+  // them and comes back into the rotor (docs/benchmarks.md, session 26). With entraining pressure
+  // faces the jet leaves at the ambient pressure and the air drawn in comes from rest; up to z/R = 1
+  // the ratio must then rise with height and stay below 1, as both algebraic models do (measured
+  // 0.78, 0.83, 0.91 here; N = 64 with 30 s averages: 0.76, 0.93, 0.98). Higher up it is still not
+  // right at N = 64 (1.01 - 1.02 from z/R = 1.25), so the test stops at 1.
+  lrm::LrmConfig cfg = quick_config();
+  cfg.faces.fill(lbm::FaceType::PressureOutlet);
+  cfg.entraining_pressure_faces = true;
+  lrm::IsolatedRotorCase c;
+  c.settle = 3.0;
+  c.average = 2.0;
+  const double oge = lrm::run_isolated_rotor(cfg, c).induced_mean;
+  std::vector<double> ratio;
+  for (double z_over_R : {0.6, 0.8, 1.0}) {
+    c.ground_height = z_over_R * cfg.radius;
+    ratio.push_back(lrm::run_isolated_rotor(cfg, c).induced_mean / oge);
+    RecordProperty("ratio_at_z_over_R_" + std::to_string(static_cast<int>(std::lround(10 * z_over_R))) + "_tenths",
+                   std::to_string(ratio.back()));
+  }
+  EXPECT_LT(ratio[0], ratio[1]);
+  EXPECT_LT(ratio[1], ratio[2]);
+  EXPECT_LT(ratio[2], 1.0);
+  // all-pressure faces hold air at rest only: a stream is refused
+  lrm::LrmDomain d(cfg);
+  EXPECT_THROW(d.set_stream(Vec3(-5.0, 0, 0)), lbm::ConfigError);
+}
+
 TEST(Ground, ForwardFlightAt6MetresPerSecondHasAGroundEffectThatFadesWithHeight) {
   // Issue 4, acceptance 4, quick variant (N = 32): the thesis' LRM predicted no ground effect at all
   // in forward flight (fig. 8.11). Physics asks for two things at low speed (6 m/s, V / v_h = 0.5,

@@ -38,6 +38,14 @@ struct FaceCondition {
   // Poinsot & Lele (1992, J. Comput. Phys. 101, 104: K = sigma (1 - M^2) c / L): waves much
   // faster than K still leave, and the steady pressure at the face is the reference's.
   float pressure_relaxation = 0.0f;
+  // PressureOutlet: an entraining face in still air. Where the air leaves, the face holds `density`
+  // (the ambient pressure); where it enters, the air has come from rest in the ambient, so by
+  // Bernoulli its static pressure is lower by the dynamic pressure of its inward normal velocity u_in:
+  // rho = density (1 - u_in^2 / (2 c_s^2)), u_in from the cell's previous step (the total-pressure
+  // inlet-outlet condition of free-jet and entrainment flows, e.g. OpenFOAM's totalPressure with
+  // pressureInletOutletVelocity). Unlike a fixed pressure on every face it pins the frame: a uniform
+  // drift through the domain would enter below the pressure at which it leaves, so it decays.
+  bool total_pressure_inflow = false;
 };
 
 struct LatticeConfig {

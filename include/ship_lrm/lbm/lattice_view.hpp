@@ -34,6 +34,7 @@ struct LatticeView {
   float face_velocity[6][3] = {};                              // wall velocity of MovingWall faces
   std::uint8_t face_inflow_reference[6] = {0, 0, 0, 0, 0, 0};  // FaceCondition::inflow_from_reference
   float face_pressure_relaxation[6] = {};                      // FaceCondition::pressure_relaxation
+  std::uint8_t face_total_pressure[6] = {0, 0, 0, 0, 0, 0};    // FaceCondition::total_pressure_inflow
   const WallMotion* walls = nullptr;
   CollisionParams params;
   // Open boundary cells (thesis 6.1.3), numbered b = 0 .. nbnd-1.
@@ -498,9 +499,11 @@ SHIP_LRM_HD Macro boundary_macro(const LatticeView& v, int b, const float g[Q], 
     m.rho = K / (1.0f + sgn * m.u[axis]);
     return m;
   }
-  if (t == CellType::PressureOutlet)
+  if (t == CellType::PressureOutlet) {
     m.rho = v.bnd_value[4 * b];
-  else {
+    const float inward = -sgn * prev.u[axis];  // sgn * u[axis] is the outward normal velocity
+    if (v.face_total_pressure[v.bnd_normal[b]] && inward > 0.0f) m.rho *= 1.0f - 1.5f * inward * inward;  // c_s^2 = 1/3
+  } else {
     // + reference change; the density target relaxed towards the reference (FaceCondition::pressure_relaxation)
     const float relax = v.face_pressure_relaxation[v.bnd_normal[b]];
     m.rho = impedance_density(K, prev.rho - relax * (prev.rho - 1.0f), sgn * prev.u[axis] + v.bnd_value[4 * b + 3]);

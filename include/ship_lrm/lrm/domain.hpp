@@ -16,6 +16,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -50,6 +51,9 @@ struct LrmConfig {
   // Recomputed when the thrust changes by more than 2 % or the air by more than 2 % of its speed (about
   // 3 s at N = 64 on 2 cores, so not for real time); the faces are then fed on the host.
   bool rotor_far_field = false;
+  // Pressure-outlet faces entrain (lbm::FaceCondition::total_pressure_inflow): air leaving holds the
+  // ambient pressure, air entering comes from rest in the ambient (Bernoulli).
+  bool entraining_pressure_faces = false;
   // -x (back), +x (front), -y (left), +y (right), -z (top), +z (bottom)
   std::array<lbm::FaceType, 6> faces = {lbm::FaceType::ImpedanceOutlet, lbm::FaceType::VelocityInlet,   lbm::FaceType::VelocityInlet,
                                         lbm::FaceType::VelocityInlet,   lbm::FaceType::ImpedanceOutlet, lbm::FaceType::ImpedanceOutlet};
@@ -137,6 +141,13 @@ class LrmDomain {
   void update_wall_motions();
   std::size_t wall_cells() const { return wall_cells_; }
   std::size_t rebuilds() const { return rebuilds_; }  // changes of the wall cells after the first (moving walls)
+  // LrmConfig::rotor_far_field over flat ground parallel to the disk, `height` m below the hub (where
+  // the bounce-back wall lies, half-way between the last fluid and the first wall cell): the far field
+  // gets the ground's mirror image (rotor::VortexCylinderWake::set_ground), so that the faces let the
+  // air that the ground turns outwards leave instead of holding it in. infinity: no ground (the
+  // default). Takes effect at the next set_rotor_forces. Throws lbm::ConfigError for a plane that does
+  // not lie below the disk.
+  void set_far_field_ground(double height);
   // Aerodynamic force on the blades over azimuth (N, mr axes); the fluid gets the opposite.
   void set_rotor_forces(const rotor::RotorForceHarmonics& h);
   // Advance by whole LBM steps (at least one).
@@ -171,8 +182,9 @@ class LrmDomain {
   double far_field_thrust_ = 0, rotor_thrust_ = 0;
   Vec3 far_field_air_ = Vec3::Zero();
   bool far_field_stale_ = true;
-  bool update_far_field(const Vec3& air);  // true when it changed
-  bool face_air_stale_ = true;             // the grid or the cell list changed since face_air_ was computed
+  double far_field_ground_ = std::numeric_limits<double>::infinity();  // m below the hub
+  bool update_far_field(const Vec3& air);                              // true when it changed
+  bool face_air_stale_ = true;                                         // the grid or the cell list changed since face_air_ was computed
   bool motion_set_ = false;
   std::vector<std::shared_ptr<WallSurface>> walls_;
   std::vector<std::int16_t> owner_;  // per cell: index of the wall that holds it, or -1

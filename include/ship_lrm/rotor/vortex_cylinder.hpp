@@ -8,6 +8,8 @@
 // rotor's own far field at its faces (LrmConfig::rotor_far_field).
 #pragma once
 
+#include <limits>
+
 #include "ship_lrm/rotor/inflow_model.hpp"
 
 namespace ship_lrm::rotor {
@@ -29,12 +31,22 @@ class VortexCylinderWake {
   VortexCylinderWake(double radius, double thrust, double density, const Vec3& air, double core, double spacing = 0.1,
                      double length = 40.0);
 
+  // A ground plane parallel to the disk, `height` m below it (the plane z = height of the disk frame):
+  // the rings that would lie in or beyond it are cut, and every ring left gets its mirror image in the
+  // plane with the opposite circulation, so that no flow crosses the plane (the image system of
+  // Knight & Hegner 1941, NACA TN 835). Outside the wake the air then leaves radially along the ground
+  // instead of passing through it. infinity (the default): no ground. Throws std::invalid_argument for
+  // a height that is not > 0.
+  void set_ground(double height);
+  double ground() const { return ground_; }
+
   double mean_induced() const { return v_; }         // v, m/s along +z
   const Vec3& wake_direction() const { return d_; }  // unit vector of the wake's axis
   Vec3 velocity(const Vec3& p) const;                // induced velocity at p (mr frame, from the hub), m/s
 
  private:
   double radius_, v_, ds_, core2_;
+  double ground_ = std::numeric_limits<double>::infinity();
   int rings_;
   Vec3 d_;
 };
