@@ -461,7 +461,7 @@ bool LrmDomain::update_far_field(const Vec3& air) {
 
 void LrmDomain::set_far_field_ground(double height) {
   const double disk = (disk_layer_ - centre_) * units_.dx();  // the disk's cell layer below the hub
-  if (!(height > disk) && !(height == std::numeric_limits<double>::infinity()))
+  if (!(height > disk))                                       // NaN too; infinity (no ground) passes
     throw lbm::ConfigError("LRM: the rotor far field's ground plane must lie below the disk (" + std::to_string(disk) +
                            " m below the hub), not " + std::to_string(height) + " m");
   far_field_ground_ = height;
