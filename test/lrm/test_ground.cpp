@@ -98,7 +98,8 @@ TEST(Ground, HoverWithEntrainingFacesStaysBelowOneWhereTheThesisFailed) {
   // faces the jet leaves at the ambient pressure and the air drawn in comes from rest; up to z/R = 1
   // the ratio must then rise with height and stay below 1, as both algebraic models do (measured
   // 0.78, 0.83, 0.91 here; N = 64 with 30 s averages: 0.76, 0.93, 0.98). Higher up it is still not
-  // right at N = 64 (1.01 - 1.02 from z/R = 1.25), so the test stops at 1.
+  // right (N = 64: 1.01 - 1.02 from z/R = 1.25; at a = 2 the same with either faces), so the test
+  // stops at 1.
   lrm::LrmConfig cfg = quick_config();
   cfg.faces.fill(lbm::FaceType::PressureOutlet);
   cfg.entraining_pressure_faces = true;
