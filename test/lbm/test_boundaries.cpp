@@ -252,9 +252,10 @@ TEST(OpenBoundaries, EntrainingPressureFaceHoldsTheAmbientWhereAirLeavesAndBerno
 // Pressure faces on both ends of a duct leave a uniform drift U through it undamped (any uniform
 // flow has the same pressure everywhere): the frame is not pinned. With entraining faces the drift
 // enters at 1.5 U^2 below the density at which it leaves, a pressure drop U^2 / 2 over the duct's
-// length L, so rho L dU/dt = -rho U^2 / 2 and U(t) = U0 / (1 + U0 t / (2 L)) (the entrance loss of a
-// duct drawing from still air, Borda-Carnot; here with nothing else to hold the flow).
-TEST(OpenBoundaries, EntrainingPressureFacesStopAUniformDriftAtTheRateOfTheirEntranceLoss) {
+// length L, so rho L dU/dt = -rho U^2 / 2 and U(t) = U0 / (1 + U0 t / (2 L)): the kinetic energy the
+// flow carries out into the still ambient is lost (the Borda-Carnot exit loss), with nothing else to
+// drive the flow.
+TEST(OpenBoundaries, EntrainingPressureFacesStopAUniformDriftAtTheRateOfTheirExitLoss) {
   const int nx = 40;
   const float U0 = 0.05f;
   auto drift = [&](bool entrain, long steps) {
