@@ -67,6 +67,8 @@ LrmDomain::LrmDomain(const LrmConfig& cfg)
   for (const auto& c : disk_.cells())
     disk_cells_.push_back(
         static_cast<std::uint32_t>(c.i + static_cast<std::size_t>(edge_) * (c.j + static_cast<std::size_t>(edge_) * disk_layer_)));
+  faces_hold_air_ = std::any_of(cfg.faces.begin(), cfg.faces.end(),
+                                [](lbm::FaceType f) { return f == lbm::FaceType::VelocityInlet || f == lbm::FaceType::ImpedanceOutlet; });
   owner_.assign(static_cast<std::size_t>(edge_) * edge_ * edge_, -1);
   inside_ = owner_;
   rebuild(false);
@@ -288,10 +290,7 @@ void LrmDomain::set_stream(const Vec3& air) {
 void LrmDomain::set_motion(const Motion& m) {
   for (const Vec3* v : {&m.air_velocity, &m.omega, &m.omega_dot, &m.hub_acceleration})
     if (!v->allFinite()) throw lbm::ConfigError("LRM: the domain motion is not finite");
-  const bool holds_air = std::any_of(cfg_.faces.begin(), cfg_.faces.end(), [](lbm::FaceType f) {
-    return f == lbm::FaceType::VelocityInlet || f == lbm::FaceType::ImpedanceOutlet;
-  });
-  if (!holds_air && (m.air_velocity.norm() > 0 || m.omega.norm() > 0))
+  if (!faces_hold_air_ && (m.air_velocity.norm() > 0 || m.omega.norm() > 0))
     throw lbm::ConfigError("LRM: all six faces are pressure faces, which hold only air at rest; a stream (here " +
                            std::to_string(m.air_velocity.norm()) +
                            " m/s) or a turning domain needs a velocity face (e.g. the front: --faces ambient-sides) or impedance faces");

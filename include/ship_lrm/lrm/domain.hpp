@@ -186,6 +186,7 @@ class LrmDomain {
   bool update_far_field(const Vec3& air);                              // true when it changed
   bool face_air_stale_ = true;                                         // the grid or the cell list changed since face_air_ was computed
   bool motion_set_ = false;
+  bool faces_hold_air_ = true;  // some face is a velocity or impedance face: it can hold a stream (set once)
   std::vector<std::shared_ptr<WallSurface>> walls_;
   std::vector<std::int16_t> owner_;  // per cell: index of the wall that holds it, or -1
   // per cell of the layers kept clear of walls: index of the body kept clear of the faces it lies in,
