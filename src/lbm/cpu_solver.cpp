@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <limits>
 #include <memory>
+#include <utility>
 
 #include "ship_lrm/lbm/solver.hpp"
 #include "ship_lrm/lbm/team_loop.hpp"
@@ -180,22 +181,32 @@ class CpuSolver final : public Solver {
     if (kStoreState)
       for (int a = 0; a < 4; ++a) store_lanes(v.aux + a * v.ncells + c0, aux[a], n);
   }
-  // to[k] = from[k] for k < n, `spare` beyond; from[k] is not read for k >= n (masked loads).
+  // to[k] = from[k] for k < n, `spare` beyond; from[k] is not read for k >= n.
   template <class T>
   static void copy_lanes(T* to, const T* from, std::size_t n, T spare) {
 #pragma omp simd
-    for (std::size_t k = 0; k < kLanes; ++k) {
-      T x = spare;
-      if (k < n) x = from[k];
-      to[k] = x;
-    }
+    for (std::size_t k = 0; k < kLanes; ++k) to[k] = spare;
+    copy_first(to, from, n);
   }
-  // to[k] = from[k] for k < n only (masked stores: the slots beyond belong to other cells).
+  // to[k] = from[k] for k < n only (the slots beyond belong to other cells).
   template <class T>
   static void store_lanes(T* to, const T* from, std::size_t n) {
-#pragma omp simd
-    for (std::size_t k = 0; k < kLanes; ++k)
-      if (k < n) to[k] = from[k];
+    copy_first(to, from, n);
+  }
+  // The first n < kLanes values, through a copy of fixed length per n: the compiler turns each into
+  // a few whole moves. Masked vector loads and stores (vmaskmovps) took half of update_segment_rest
+  // on an AVX2 AMD machine, and a loop of variable length runs scalar.
+  template <class T>
+  static void copy_first(T* to, const T* from, std::size_t n) {
+    copy_first(to, from, n, std::make_index_sequence<kLanes>{});
+  }
+  template <class T, std::size_t... kN>
+  static void copy_first(T* to, const T* from, std::size_t n, std::index_sequence<kN...>) {
+    ((n == kN ? copy_fixed<kN>(to, from) : void()), ...);
+  }
+  template <std::size_t kN, class T>
+  static void copy_fixed(T* to, const T* from) {
+    for (std::size_t k = 0; k < kN; ++k) to[k] = from[k];
   }
 
   template <bool kOdd, bool kSmagorinsky, int kForce>
@@ -463,8 +474,16 @@ class CpuSolver final : public Solver {
   // Per bulk segment: 1 where a cell of it may hold a non-zero field force (set when one is set,
   // cleared only by set_force_field), so that segments without one skip the field.
   std::vector<std::uint8_t> segment_forced_;
-  // update_segment's vector width: the AVX-512 registers' 16 floats (two passes of AVX2)
+  // update_segment's group of cells, and the lanes its last cells are copied into: the AVX-512
+  // registers' 16 floats where the compiler targets them, else 8 (an AVX2 register, two SSE ones).
+  // The rest of a segment costs a whole group's arithmetic, so a wider group than the registers only
+  // wastes lanes (the LRM's 38-cell rows: 6 cells in 16 lanes took a fifth of the N = 32 step on an
+  // AVX2 machine).
+#if defined(__AVX512F__)
   static constexpr std::size_t kLanes = 16;
+#else
+  static constexpr std::size_t kLanes = 8;
+#endif
   // run_step's loops (segments, general cells, boundary states, boundary blocks, held cells) and their
   // chunks (a few dozen per thread's share at N = 32)
   static constexpr long kSegmentChunk = 16, kGeneralChunk = 32, kBoundaryChunk = 128, kBlockChunk = 2, kHeldChunk = 32;
