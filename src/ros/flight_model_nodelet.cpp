@@ -38,6 +38,7 @@
 #include "ship_lrm/flight/parameters.hpp"
 #include "ship_lrm/flight/trim.hpp"
 #include "ship_lrm/lrm/approach.hpp"
+#include "ship_lrm/lrm/deadline_watch.hpp"
 #include "ship_lrm/lrm/wall_clock_pacer.hpp"
 #include "ship_lrm/ros/approach_params.hpp"
 #include "ship_lrm/ros/conversions.hpp"
@@ -229,6 +230,10 @@ class FlightModelNodelet : public nodelet::Nodelet {
       }
       publish(false, piloted);
       report_fallback();
+      if (const lrm::RealTimeInflow* rt = approach_->realtime_inflow()) {
+        const std::string late = deadline_watch_.update(approach_->time(), rt->stats());
+        if (!late.empty()) NODELET_WARN("FlightModel: %s", late.c_str());
+      }
       if (realtime_) {
         pacer.wait_until(t);
         overruns_ = pacer.overruns();
@@ -444,6 +449,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
   lrm::ApproachConfig cfg_;
   flight::HelicopterParameters params_;
   bool realtime_ = false, reported_lost_ = false, released_ = false;
+  lrm::DeadlineWatch deadline_watch_;  // says aloud when most steps of 5 s flew on Pitt-Peters
   double pp_collective_ = 0;
   lrm::RealTimeMode realtime_mode_ = lrm::RealTimeMode::LockStep;
   double epoch_ = 1.0;  // ROS time of simulated time 0 (sim_epoch.hpp)

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "ship_lrm/flight/parameters.hpp"
 #include "ship_lrm/lrm/approach.hpp"
+#include "ship_lrm/lrm/deadline_watch.hpp"
 #include "ship_lrm/lrm/realtime_inflow.hpp"
 #include "ship_lrm/lrm/wall_clock_pacer.hpp"
 #include "ship_lrm/wake/wake_precompute.hpp"
@@ -120,10 +121,15 @@ std::function<int()> add_approach_command(CLI::App& app) {
     write_row(csv, run.sample());
     double next_row = o->output_interval, next_report = 2.0;
     lrm::WallClockPacer pacer(run.time());
+    lrm::DeadlineWatch deadline_watch;
     while (!run.done()) {
       if (o->realtime) run.set_deadline(pacer.due(run.time() + run.time_step()));
       run.step();
       if (o->realtime) pacer.wait_until(run.time());
+      if (const auto* rt = run.realtime_inflow()) {
+        const std::string late = deadline_watch.update(run.time(), rt->stats());
+        if (!late.empty()) std::cerr << "approach: warning: " << late << "\n";
+      }
       const lrm::ApproachSample& s = run.sample();
       if (!std::isfinite(s.thrust))
         throw std::runtime_error("approach: the rotor loads are not finite at t = " + std::to_string(s.time) + " s");

@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "lrm_test_config.hpp"
+#include "ship_lrm/lrm/deadline_watch.hpp"
 #include "ship_lrm/lrm/realtime_inflow.hpp"
 
 using namespace ship_lrm;
@@ -139,3 +141,33 @@ TEST(RealTimeInflow, PipelinedLateJobsAreDroppedAndPittPetersServesUntilOneIsOnT
 }
 
 TEST(RealTimeInflow, BadBudgetIsRefused) { EXPECT_THROW(lrm::make_realtime_lrm(tiny_config(), 0.2, 0.0), lbm::ConfigError); }
+
+// The watch of a paced run: windows of simulated time in which most steps flew on Pitt-Peters are
+// reported with their counts, others are not (1.8 ms steps, 5 s windows: 2 772 steps per window).
+TEST(DeadlineWatch, ReportsEachWindowInWhichMostStepsMissedTheirDeadline) {
+  const double dt = 0.0018;
+  lrm::DeadlineWatch watch(5.0, 0.5);
+  lrm::RealTimeStats totals;
+  std::vector<std::string> messages;
+  for (int k = 1; k <= 8334; ++k) {  // 15 s: windows 0-5 s (40 % missed), 5-10 s (90 %), 10-15 s (50 % exactly)
+    const double t = k * dt;
+    ++totals.steps;
+    const int phase = static_cast<int>(k / 2778.0);  // 2778 steps = 5 s
+    if ((phase == 0 && k % 5 < 2) || (phase == 1 && k % 10 != 0) || (phase == 2 && k % 2 == 0)) ++totals.deadline_misses;
+    const std::string m = watch.update(t, totals);
+    if (!m.empty()) messages.push_back(m);
+  }
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_EQ(watch.reports(), 1);
+  // the second window, 5 to 10 s: 9 of 10 of its steps missed
+  EXPECT_NE(messages[0].find("(90 %)"), std::string::npos) << messages[0];
+  EXPECT_NE(messages[0].find("from t = 5.0 to 10.0 s"), std::string::npos) << messages[0];
+  EXPECT_NE(messages[0].find("backend cuda"), std::string::npos) << messages[0];
+}
+
+TEST(DeadlineWatch, RefusesAWindowOrThresholdThatMeansNothing) {
+  EXPECT_THROW(lrm::DeadlineWatch(0.0, 0.5), std::invalid_argument);
+  EXPECT_THROW(lrm::DeadlineWatch(std::nan(""), 0.5), std::invalid_argument);
+  EXPECT_THROW(lrm::DeadlineWatch(5.0, 1.5), std::invalid_argument);
+  EXPECT_THROW(lrm::DeadlineWatch(5.0, -0.1), std::invalid_argument);
+}
