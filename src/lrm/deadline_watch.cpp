@@ -14,10 +14,11 @@ DeadlineWatch::DeadlineWatch(double window_s, double threshold) : window_s_(wind
 std::string DeadlineWatch::update(double t, const RealTimeStats& totals) {
   if (t < window_end_) return {};
   const long steps = totals.steps - steps_at_start_, misses = totals.deadline_misses - misses_at_start_;
-  const double from = window_end_ - window_s_;
+  const double from = window_start_;  // where the counts below began (a long step may span windows)
+  window_start_ = t;
   steps_at_start_ = totals.steps;
   misses_at_start_ = totals.deadline_misses;
-  while (window_end_ <= t) window_end_ += window_s_;  // a long step may span windows: the next ends after t
+  while (window_end_ <= t) window_end_ += window_s_;  // the next window ends after t
   if (steps <= 0 || static_cast<double>(misses) <= threshold_ * static_cast<double>(steps)) return {};
   ++reports_;
   char text[400];

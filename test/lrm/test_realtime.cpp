@@ -143,13 +143,13 @@ TEST(RealTimeInflow, PipelinedLateJobsAreDroppedAndPittPetersServesUntilOneIsOnT
 TEST(RealTimeInflow, BadBudgetIsRefused) { EXPECT_THROW(lrm::make_realtime_lrm(tiny_config(), 0.2, 0.0), lbm::ConfigError); }
 
 // The watch of a paced run: windows of simulated time in which most steps flew on Pitt-Peters are
-// reported with their counts, others are not (1.8 ms steps, 5 s windows: 2 772 steps per window).
+// reported with their counts, others are not (1.8 ms steps, 5 s windows: about 2 778 steps per window).
 TEST(DeadlineWatch, ReportsEachWindowInWhichMostStepsMissedTheirDeadline) {
   const double dt = 0.0018;
   lrm::DeadlineWatch watch(5.0, 0.5);
   lrm::RealTimeStats totals;
   std::vector<std::string> messages;
-  for (int k = 1; k <= 8334; ++k) {  // 15 s: windows 0-5 s (40 % missed), 5-10 s (90 %), 10-15 s (50 % exactly)
+  for (int k = 1; k <= 8334; ++k) {  // 15 s: windows 0-5 s (40 % missed), 5-10 s (90 %), 10-15 s (half, not more)
     const double t = k * dt;
     ++totals.steps;
     const int phase = static_cast<int>(k / 2778.0);  // 2778 steps = 5 s

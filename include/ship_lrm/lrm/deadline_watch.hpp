@@ -25,7 +25,7 @@ class DeadlineWatch {
 
  private:
   double window_s_, threshold_;
-  double window_end_;
+  double window_start_ = 0, window_end_;  // simulated time where the counted steps began, and where the window ends
   long steps_at_start_ = 0, misses_at_start_ = 0;
   int reports_ = 0;
 };
