@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <limits>
 #include <memory>
+#include <type_traits>
 #include <utility>
 
 #include "ship_lrm/lbm/solver.hpp"
@@ -174,8 +175,10 @@ class CpuSolver final : public Solver {
     lanes.aux = &aux[0][0];
     if (v.force)
       for (int a = 0; a < 3; ++a) copy_lanes(force[a], v.force + a * v.ncells + c0, n, 0.0f);
+        // the lane's x through a 32-bit int: a 64-bit integer does not convert to float in AVX2 vectors,
+        // and the frame's forces (which need x) made this loop scalar there (0.4 of the turning step)
 #pragma omp simd
-    for (std::size_t k = 0; k < kLanes; ++k)
+    for (int k = 0; k < static_cast<int>(kLanes); ++k)
       update_segment_cell<kSmagorinsky, kForce, kStoreState>(lanes, k, x0 + static_cast<float>(k), y, z, lane_in, lane_out);
     for (int i = 0; i < Q; ++i) store_lanes(dst[i] + c0, out[i], n);
     if (kStoreState)
@@ -215,9 +218,25 @@ class CpuSolver final : public Solver {
   }
 
   // Cells without a field force while the field is on (the rotor's force density covers a few per
-  // cent of the LRM's cells at most) take the same update without the field's loads and the Guo
-  // source terms of a zero force: segments (segment_forced_) and boundary blocks that hold none.
-  bool fieldless_uniform() const { return uniform_force_set(view_); }
+  // cent of the LRM's cells at most) take the same update without the field's loads (and, where no
+  // other force is left, without the Guo source terms of a zero force): segments (segment_forced_)
+  // and boundary blocks that hold none. body(mode) runs the update with force mode kForce, or, where
+  // `forced` is false, with kForce's mode less the field (an std::integral_constant).
+  template <int kForce, class Body>
+  void with_field_if(bool forced, Body&& body) const {
+    using Mode = std::integral_constant<int, kForce>;
+    if constexpr (!has_force_field(kForce)) {
+      body(Mode{});
+    } else if (forced) {
+      body(Mode{});
+    } else if constexpr (kForce == kFrameForceField) {
+      body(std::integral_constant<int, kFrameForce>{});
+    } else if (uniform_force_set(view_)) {
+      body(std::integral_constant<int, kUniformForce>{});
+    } else {
+      body(std::integral_constant<int, kNoForce>{});
+    }
+  }
   void mark_forced_segments() {
     const auto& segs = lattice_.bulk_segments();
     segment_forced_.assign(segs.size(), 0);
@@ -239,12 +258,11 @@ class CpuSolver final : public Solver {
   void update_boundary_block(int b0) {
     const LatticeView& v = view_;
     const int n = std::min(kBoundaryBlock, v.nbnd - b0);
-    if (kForce == kForceField) {  // a block without a field force skips it (fieldless_uniform)
+    if constexpr (has_force_field(kForce)) {  // a block without a field force skips it (with_field_if)
       bool forced = false;
       for (int k = 0; k < n && !forced; ++k) forced = field_force_at(v.bnd_cell[b0 + k]);
       if (!forced)
-        return fieldless_uniform() ? update_boundary_block<kOdd, kSmagorinsky, kUniformForce>(b0)
-                                   : update_boundary_block<kOdd, kSmagorinsky, kNoForce>(b0);
+        return with_field_if<kForce>(false, [&](auto mode) { update_boundary_block<kOdd, kSmagorinsky, decltype(mode)::value>(b0); });
     }
     alignas(64) float X[16][kBoundaryBlock];
     alignas(64) float G[Q][kBoundaryBlock];
@@ -299,12 +317,8 @@ class CpuSolver final : public Solver {
       const int t = omp_get_thread_num();
       loops_[0].run(t, [&](long s) {
         const bool st = store && segs[s].store_state;
-        if (kForce != kForceField || segment_forced_[s])
-          update_segment<kOdd, kSmagorinsky, kForce>(segs[s], st);
-        else if (fieldless_uniform())
-          update_segment<kOdd, kSmagorinsky, kUniformForce>(segs[s], st);
-        else
-          update_segment<kOdd, kSmagorinsky, kNoForce>(segs[s], st);
+        const bool forced = has_force_field(kForce) && segment_forced_[s];  // (sized only once a field is set)
+        with_field_if<kForce>(forced, [&](auto mode) { update_segment<kOdd, kSmagorinsky, decltype(mode)::value>(segs[s], st); });
       });
       loops_[1].run(t, [&](long k) { update_wall_cell<kOdd>(v, general[k], masks[k]); });
       if (v.nbnd) {
@@ -331,8 +345,10 @@ class CpuSolver final : public Solver {
         return run_step<kOdd, kSmagorinsky, kUniformForce>();
       case kForceField:
         return run_step<kOdd, kSmagorinsky, kForceField>();
-      default:
+      case kFrameForce:
         return run_step<kOdd, kSmagorinsky, kFrameForce>();
+      default:
+        return run_step<kOdd, kSmagorinsky, kFrameForceField>();
     }
   }
   template <bool kOdd>
@@ -427,8 +443,11 @@ class CpuSolver final : public Solver {
           case kForceField:
             segment_fields<kOdd, kForceField>(segs[k], out);
             break;
-          default:
+          case kFrameForce:
             segment_fields<kOdd, kFrameForce>(segs[k], out);
+            break;
+          default:
+            segment_fields<kOdd, kFrameForceField>(segs[k], out);
         }
       }
     }

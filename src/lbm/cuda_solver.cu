@@ -409,8 +409,10 @@ class CudaSolver final : public Solver {
         return launch_step<kOdd, kSmagorinsky, kUniformForce>();
       case kForceField:
         return launch_step<kOdd, kSmagorinsky, kForceField>();
-      default:
+      case kFrameForce:
         return launch_step<kOdd, kSmagorinsky, kFrameForce>();
+      default:
+        return launch_step<kOdd, kSmagorinsky, kFrameForceField>();
     }
   }
   template <bool kOdd>

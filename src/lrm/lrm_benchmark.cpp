@@ -16,9 +16,9 @@ namespace ship_lrm::lrm {
 std::string LrmBenchmarkResult::to_json() const {
   std::ostringstream os;
   os << "{\"benchmark\": \"lrm\", \"backend\": \"" << backend << "\", \"N\": " << nodes << ", \"reach\": " << reach
-     << ", \"cells_per_edge\": " << cells_per_edge << ", \"cells\": " << cells << ", \"flight_steps\": " << flight_steps
-     << ", \"lbm_steps\": " << lbm_steps << ", \"simulated_s\": " << simulated_seconds << ", \"wall_s\": " << wall_seconds
-     << ", \"clock_over_sim\": " << clock_over_sim << ", \"mlups\": " << mlups;
+     << ", \"yaw_rate_deg_s\": " << yaw_rate * 180.0 / M_PI << ", \"cells_per_edge\": " << cells_per_edge << ", \"cells\": " << cells
+     << ", \"flight_steps\": " << flight_steps << ", \"lbm_steps\": " << lbm_steps << ", \"simulated_s\": " << simulated_seconds
+     << ", \"wall_s\": " << wall_seconds << ", \"clock_over_sim\": " << clock_over_sim << ", \"mlups\": " << mlups;
   if (has_split)
     os << ", \"split_s\": {\"lbm\": " << lbm_s << ", \"motion\": " << motion_s << ", \"forces\": " << forces_s
        << ", \"inflow\": " << inflow_s << ", \"flight\": " << flight_s << "}";
@@ -32,11 +32,14 @@ std::string LrmBenchmarkResult::to_json() const {
 namespace {
 
 // The benchmarks' set-up: the Bo 105 trimmed with Pitt-Peters at `speed`, then flown (fuselage held at
-// the trim) with the inflow model `make_inflow(cfg)` builds; reset() runs the LRM warm-up (not timed).
+// the trim, turning at yaw_rate) with the inflow model `make_inflow(cfg)` builds; reset() runs the LRM
+// warm-up (not timed).
 template <typename Inflow, typename Make>
 std::pair<std::unique_ptr<flight::Helicopter>, Inflow*> trimmed_helicopter(const flight::HelicopterParameters& p, LrmConfig cfg,
-                                                                           double seconds, double speed, Make make_inflow) {
+                                                                           double seconds, double speed, double yaw_rate,
+                                                                           Make make_inflow) {
   if (!(seconds > 0)) throw lbm::ConfigError("lrm benchmark: needs seconds > 0");
+  if (!std::isfinite(yaw_rate)) throw lbm::ConfigError("lrm benchmark: the yaw rate is not finite");
   cfg.radius = p.main_rotor.radius;
   cfg.density = p.density;
   flight::Helicopter pp(p);
@@ -49,22 +52,25 @@ std::pair<std::unique_ptr<flight::Helicopter>, Inflow*> trimmed_helicopter(const
   auto heli = std::make_unique<flight::Helicopter>(p, std::move(inflow), flight::EngineMode::ConstantSpeed);
   heli->set_controls(trim.controls);
   heli->set_body_held(true);
-  heli->reset(trim.body);
+  flight::RigidBodyState body = trim.body;
+  body.rate.z() = yaw_rate;  // body z (FRD): positive is a turn to starboard
+  heli->reset(body);
   return {std::move(heli), raw};
 }
 
 }  // namespace
 
 LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg_in, double seconds, double speed,
-                                     double warm_up) {
-  auto [heli_ptr, lrm] =
-      trimmed_helicopter<LrmInflow>(p, cfg_in, seconds, speed, [&](const LrmConfig& c) { return std::make_unique<LrmInflow>(c, warm_up); });
+                                     double warm_up, double yaw_rate) {
+  auto [heli_ptr, lrm] = trimmed_helicopter<LrmInflow>(p, cfg_in, seconds, speed, yaw_rate,
+                                                       [&](const LrmConfig& c) { return std::make_unique<LrmInflow>(c, warm_up); });
   flight::Helicopter& heli = *heli_ptr;
   const LrmConfig& cfg = cfg_in;
   LrmBenchmarkResult r;
   r.backend = lrm->domain().solver().backend_name();
   r.nodes = cfg.nodes;
   r.reach = cfg.reach;
+  r.yaw_rate = yaw_rate;
   r.cells_per_edge = lrm->domain().cells_per_edge();
   r.cells = static_cast<long>(lrm->domain().solver().lattice().cells());
   const long lbm0 = lrm->lbm_steps();
@@ -90,8 +96,8 @@ LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, cons
 }
 
 LrmBenchmarkResult run_realtime_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg_in, double seconds, double speed,
-                                          double warm_up, RealTimeMode mode) {
-  auto [heli_ptr, rt] = trimmed_helicopter<RealTimeInflow>(p, cfg_in, seconds, speed,
+                                          double warm_up, RealTimeMode mode, double yaw_rate) {
+  auto [heli_ptr, rt] = trimmed_helicopter<RealTimeInflow>(p, cfg_in, seconds, speed, yaw_rate,
                                                            [&](const LrmConfig& c) { return make_realtime_lrm(c, warm_up, 1.0, mode); });
   LrmInflow& lrm = static_cast<LrmInflow&>(rt->slow());
   flight::Helicopter& heli = *heli_ptr;
@@ -102,6 +108,7 @@ LrmBenchmarkResult run_realtime_benchmark(const flight::HelicopterParameters& p,
   r.backend = lrm.domain().solver().backend_name();
   r.nodes = cfg.nodes;
   r.reach = cfg.reach;
+  r.yaw_rate = yaw_rate;
   r.cells_per_edge = lrm.domain().cells_per_edge();
   r.cells = static_cast<long>(lrm.domain().solver().lattice().cells());
   const long lbm0 = lrm.lbm_steps();

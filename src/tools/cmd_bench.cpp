@@ -1,4 +1,5 @@
 // `ship_lrm bench lbm`: LBM throughput against the measured memory-bandwidth roofline.
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 
@@ -49,7 +50,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
   struct LrmOpts {
     std::string backend = "auto";
     int nodes = 64;
-    double reach = 1.25, seconds = 2, speed = 25, warm_up = 0.5;
+    double reach = 1.25, seconds = 2, speed = 25, warm_up = 0.5, yaw_rate = 0;
     bool json = false, realtime = false, pipelined = false;
   };
   auto lo = std::make_shared<LrmOpts>();
@@ -59,6 +60,12 @@ std::function<int()> add_bench_command(CLI::App& app) {
   lrm_cmd->add_option("--seconds", lo->seconds, "simulated seconds timed")->check(CLI::Range(0.01, 600.0))->capture_default_str();
   lrm_cmd->add_option("--speed", lo->speed, "trimmed speed, m/s")->check(CLI::Range(0.0, 40.0))->capture_default_str();
   lrm_cmd->add_option("--warm-up", lo->warm_up, "simulated seconds before timing")->check(CLI::Range(0.0, 600.0))->capture_default_str();
+  lrm_cmd
+      ->add_option("--yaw-rate", lo->yaw_rate,
+                   "deg/s: the held fuselage turns at this rate, so that the LRM domain rotates and its step includes the "
+                   "frame's fictitious forces (a manoeuvre's step; 0: straight flight)")
+      ->check(CLI::Range(-90.0, 90.0))
+      ->capture_default_str();
   lrm_cmd->add_flag("--json", lo->json, "print one JSON object");
   lrm_cmd->add_flag("--realtime", lo->realtime,
                     "pace the run to the wall clock with firm deadlines (LRM in its own thread, Pitt-Peters for late steps): "
@@ -112,14 +119,15 @@ std::function<int()> add_bench_command(CLI::App& app) {
       const auto p = flight::load_default_bo105();
       if (lo->pipelined && !lo->realtime) throw lbm::ConfigError("bench lrm: --pipelined needs --realtime");
       const auto mode = lo->pipelined ? lrm::RealTimeMode::Pipelined : lrm::RealTimeMode::LockStep;
-      const auto r = lo->realtime ? lrm::run_realtime_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up, mode)
-                                  : lrm::run_lrm_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up);
+      const double yaw_rate = lo->yaw_rate * M_PI / 180.0;
+      const auto r = lo->realtime ? lrm::run_realtime_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up, mode, yaw_rate)
+                                  : lrm::run_lrm_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up, yaw_rate);
       if (lo->json) {
         std::cout << r.to_json() << std::endl;
       } else {
         std::cout << std::fixed << std::setprecision(3) << "coupled LRM step, " << r.backend << ", N = " << r.nodes << ", a = " << r.reach
-                  << " (" << r.cells_per_edge << "^3 cells): t_clock / t_sim = " << r.clock_over_sim << ", " << std::setprecision(1)
-                  << r.mlups << " MLUPS\n";
+                  << " (" << r.cells_per_edge << "^3 cells" << (r.yaw_rate != 0 ? ", turning" : "")
+                  << "): t_clock / t_sim = " << r.clock_over_sim << ", " << std::setprecision(1) << r.mlups << " MLUPS\n";
         if (r.realtime)
           std::cout << std::setprecision(2) << "paced real time: " << r.deadline_misses << " of " << r.flight_steps
                     << " steps missed their deadline (" << 100.0 * r.miss_fraction << " %), Pitt-Peters served them; worst on-time wait "

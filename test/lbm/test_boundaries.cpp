@@ -375,6 +375,42 @@ TEST(Forces, ListedCellForcesReachTheBulkPath) {
   EXPECT_NEAR(momentum(s->fields(), 2), 4.5 * F, 1e-3 * 4.5 * F);
 }
 
+// In a frame that accelerates at a, every cell feels the fictitious force -rho a (Landau & Lifshitz,
+// Mechanics, eq. 39.7); listed cell forces (the rotor disk's) add to it. Guo forcing conserves
+// momentum exactly, so in a periodic box the total momentum changes by (sum of the field) - M a per
+// step, M the (conserved) mass: with the field on two cells, after it is cleared (the frame's forces
+// alone), and with the field back. The solvers compile the frame's step with and without the field
+// as separate modes, and skip the field's loads in runs of cells that hold none: a step that dropped
+// the field, or the frame's forces, in either would miss these totals by half or more.
+TEST(Forces, FrameAccelerationAndFieldForcesBothReachEveryCell) {
+  const LatticeConfig cfg = periodic_config(19, 12, 10, 0.05f);  // rows of 19: vector groups and a rest
+  auto s = make_cpu_solver(Lattice(cfg));
+  const double mass = static_cast<double>(s->lattice().cells());  // rho = 1 at the start
+  FrameMotion frame;
+  frame.acceleration = {1e-6f, 0.0f, -0.5e-6f};
+  s->set_frame_motion(frame);
+  const std::vector<std::uint32_t> cells = {static_cast<std::uint32_t>(s->lattice().index(8, 6, 5)),
+                                            static_cast<std::uint32_t>(s->lattice().index(17, 1, 9))};
+  const float F = 4e-4f;
+  s->set_cell_forces(cells, {F, 0, 0, F, 0, 0});
+  const auto expect_momentum = [&](double steps, double fx, double fz, const char* what) {
+    const Fields f = s->fields();  // u with the half-force shift (Guo eq. 20): steps + 1/2 steps' force
+    const double jx = (steps + 0.5) * (fx - mass * frame.acceleration[0]), jz = (steps + 0.5) * (fz - mass * frame.acceleration[2]);
+    EXPECT_NEAR(momentum(f, 0), jx, 2e-3 * std::abs(jx)) << what;
+    EXPECT_NEAR(momentum(f, 2), jz, 2e-3 * std::abs(jz)) << what;
+  };
+  s->step(10);
+  expect_momentum(10, 2 * F, 0, "frame and field");
+  s->set_force_field({});
+  s->step(10);  // the momentum so far, plus 10 steps of the frame's force alone
+  {
+    const Fields f = s->fields();
+    const double jx = 10 * 2 * F + 10.5 * (-mass * frame.acceleration[0]) + 10 * (-mass * frame.acceleration[0]);
+    EXPECT_NEAR(momentum(f, 0), jx, 2e-3 * std::abs(jx)) << "frame alone";
+    EXPECT_NEAR(momentum(f, 2), 20.5 * (-mass * frame.acceleration[2]), 2e-3 * 20.5 * mass * 0.5e-6) << "frame alone";
+  }
+}
+
 // The CPU runs the last cells of a row's segment that do not fill a vector (fewer than 16) through a
 // vector pass of their own (update_segment_rest: copied into lanes, updated, copied back). Each cell's
 // arithmetic is the same function with the same operations either way, so in a periodic box a flow

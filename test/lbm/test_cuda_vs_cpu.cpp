@@ -95,6 +95,29 @@ TEST(CudaBackend, MatchesCpuPeriodicWithForceField) {
   compare(*cpu, *gpu, 99, 1e-5);
 }
 
+// A non-inertial frame (the LRM domain turning and decelerating), with and without a force field:
+// the frame's modes of both backends.
+TEST(CudaBackend, MatchesCpuInAnAcceleratingRotatingFrame) {
+  if (!cuda_available()) GTEST_SKIP() << "no CUDA device: run scripts/gpu_check.sh on a GPU machine";
+  auto cpu = make_cpu_solver(every_boundary_case());
+  auto gpu = make_cuda_solver(every_boundary_case());
+  FrameMotion frame;
+  frame.acceleration = {-2e-5f, 1e-5f, 0.5e-5f};
+  frame.omega = {0.0f, 1e-3f, 2e-3f};
+  frame.omega_dot = {1e-6f, 0.0f, -1e-6f};
+  frame.centre = {20.0f, 12.0f, 10.0f};
+  std::vector<float> f(3 * cpu->lattice().cells(), 0.0f);
+  for (std::size_t c = 0; c < cpu->lattice().cells(); c += 11) f[3 * c + 2] = -1e-5f;
+  for (Solver* s : {cpu.get(), gpu.get()}) {
+    s->set_frame_motion(frame);
+    s->set_force_field(f);
+  }
+  compare(*cpu, *gpu, 1, 1e-6);
+  compare(*cpu, *gpu, 49, 1e-5);
+  for (Solver* s : {cpu.get(), gpu.get()}) s->set_force_field({});
+  compare(*cpu, *gpu, 50, 1e-5);
+}
+
 // The same case runs on the CPU (always): it must stay finite and conserve what it should not
 // lose through walls. This keeps the every-boundary set-up exercised where no GPU exists.
 TEST(CudaBackend, EveryBoundaryCaseRunsOnCpu) {
@@ -139,7 +162,9 @@ TEST(CpuFields, EqualTheCellByCellStateInEveryForceMode) {
   frame.omega_dot = {1e-6f, 0.0f, 0.0f};
   frame.centre = {20.0f, 12.0f, 10.0f};
   cpu->set_frame_motion(frame);
-  check("frame forces");
+  check("frame forces with the field");
+  cpu->set_force_field({});
+  check("frame forces without a field");
 }
 
 // The listed-cell exchange the LRM uses every step (rotor-disk forces in, disk velocities out) moves

@@ -76,9 +76,15 @@ inline std::size_t population_stride(std::size_t ncells) {
   return (ncells + page - 1) / page * page + shift;
 }
 
-// Force on a cell: none, the uniform force only, uniform plus the per-cell field, or all of these
-// plus the fictitious forces of a non-inertial frame (which depend on the cell's state).
-enum ForceMode : int { kNoForce = 0, kUniformForce = 1, kForceField = 2, kFrameForce = 3 };
+// Force on a cell: none, the uniform force only, uniform plus the per-cell field, or the fictitious
+// forces of a non-inertial frame (which depend on the cell's state) plus the uniform force, without
+// or with the field. The mode is a template parameter of the updates, so that whether they read the
+// field is known when they are compiled: a test of the field pointer per cell is control flow that
+// GCC does not vectorise, and made the frame's step (the LRM domain decelerating) 3.7 times slower
+// than the others on the CPU (docs/benchmarks.md, session 28).
+enum ForceMode : int { kNoForce = 0, kUniformForce = 1, kForceField = 2, kFrameForce = 3, kFrameForceField = 4 };
+SHIP_LRM_HD constexpr bool has_force_field(int mode) { return mode == kForceField || mode == kFrameForceField; }
+SHIP_LRM_HD constexpr bool has_frame_force(int mode) { return mode == kFrameForce || mode == kFrameForceField; }
 
 // Coordinates of cell c. In 32-bit arithmetic where the index fits (every lattice here): a 64-bit
 // division costs several times a 32-bit one on x86 and GPUs, and the boundary passes call this per
@@ -101,19 +107,19 @@ SHIP_LRM_HD void cell_coords(const LatticeView& v, std::size_t c, int& x, int& y
 // Force density on cell c before the frame's fictitious forces: the uniform force and the field.
 template <int kForce>
 SHIP_LRM_HD void base_force(const LatticeView& v, std::size_t c, float F[3]) {
-  const bool field = kForce == kForceField || (kForce == kFrameForce && v.force != nullptr);
-  for (int a = 0; a < 3; ++a) F[a] = (kForce == kNoForce ? 0.0f : v.uniform_force[a]) + (field ? v.force[a * v.ncells + c] : 0.0f);
+  for (int a = 0; a < 3; ++a)
+    F[a] = (kForce == kNoForce ? 0.0f : v.uniform_force[a]) + (has_force_field(kForce) ? v.force[a * v.ncells + c] : 0.0f);
 }
 
 // The state (density, velocity with the Guo half-force shift) that enters a cell's collision, from
 // its pre-collision populations g; F holds its base_force and is completed with the frame's
-// fictitious forces at the cell's position p (used with kFrameForce only). The moments are summed
+// fictitious forces at the cell's position p (used in the frame's modes only). The moments are summed
 // once, since the fictitious forces need them too.
 template <int kForce>
 SHIP_LRM_HD Macro collision_state(const LatticeView& v, const float p[3], const float g[Q], float F[3]) {
   float rho, j[3];
   moments(g, rho, j);
-  if (kForce == kFrameForce) add_frame_force(v.frame, p, rho, j, F);
+  if (has_frame_force(kForce)) add_frame_force(v.frame, p, rho, j, F);
   return macro_from_moments(rho, j, F);
 }
 
@@ -138,14 +144,14 @@ SHIP_LRM_HD Macro cell_state(const LatticeView& v, std::size_t c, const float p[
 template <int kForce>
 SHIP_LRM_HD Macro cell_state(const LatticeView& v, std::size_t c, const float g[Q], float F[3]) {
   float p[3] = {0.0f, 0.0f, 0.0f};
-  if (kForce == kFrameForce) cell_position(v, c, p);
+  if (has_frame_force(kForce)) cell_position(v, c, p);
   return cell_state<kForce>(v, c, p, g, F);
 }
 SHIP_LRM_HD bool uniform_force_set(const LatticeView& v) {
   return v.uniform_force[0] != 0.0f || v.uniform_force[1] != 0.0f || v.uniform_force[2] != 0.0f;
 }
 SHIP_LRM_HD int force_mode(const LatticeView& v) {
-  if (v.frame_active) return kFrameForce;
+  if (v.frame_active) return v.force ? kFrameForceField : kFrameForce;
   return v.force ? kForceField : (uniform_force_set(v) ? kUniformForce : kNoForce);
 }
 // The same with the mode chosen at run time (cells off the vectorised bulk path).
@@ -157,8 +163,10 @@ SHIP_LRM_HD Macro cell_state(const LatticeView& v, std::size_t c, const float g[
       return cell_state<kUniformForce>(v, c, g, F);
     case kForceField:
       return cell_state<kForceField>(v, c, g, F);
-    default:
+    case kFrameForce:
       return cell_state<kFrameForce>(v, c, g, F);
+    default:
+      return cell_state<kFrameForceField>(v, c, g, F);
   }
 }
 
@@ -739,7 +747,7 @@ SHIP_LRM_HD void boundary_inputs(const LatticeView& v, int b, Macro& m, float S[
   boundary_strain(v, b, S);
   base_force<kForce>(v, c, F);
   p[0] = p[1] = p[2] = 0.0f;
-  if (kForce == kFrameForce) cell_position(v, c, p);
+  if (has_frame_force(kForce)) cell_position(v, c, p);
 }
 
 // Post-collision populations g of an open-boundary cell rebuilt from boundary_inputs (no access to

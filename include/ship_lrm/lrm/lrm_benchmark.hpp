@@ -12,7 +12,7 @@ namespace ship_lrm::lrm {
 struct LrmBenchmarkResult {
   std::string backend;
   int nodes = 0, cells_per_edge = 0;
-  double reach = 0;
+  double reach = 0, yaw_rate = 0;  // yaw_rate: rad/s of the held fuselage (a steady turn; 0: straight)
   long cells = 0, flight_steps = 0, lbm_steps = 0;
   double simulated_seconds = 0, wall_seconds = 0;
   double clock_over_sim = 0;  // t_clock / t_sim (thesis 8.3.1; < 1 is real time)
@@ -30,12 +30,15 @@ struct LrmBenchmarkResult {
 
 // Trims the Bo 105 with Pitt-Peters at `speed`, then runs the coupled step (LRM inflow, fuselage
 // held at the trim) for `seconds` of simulated time after `warm_up` seconds that are not timed.
+// yaw_rate (rad/s): the held fuselage turns at this rate (its trim is still the straight one), so
+// that the LRM domain rotates and each LBM step includes the fictitious forces of its frame (the
+// step of a manoeuvre; 0: the inertial step of straight flight).
 LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg, double seconds, double speed,
-                                     double warm_up);
+                                     double warm_up, double yaw_rate = 0.0);
 
 // The same coupled step paced to the wall clock (RealTimeInflow): each flight-model step is due at
 // t0 + k dt; the LRM inflow that misses that deadline is replaced by Pitt-Peters and counted.
 LrmBenchmarkResult run_realtime_benchmark(const flight::HelicopterParameters& p, const LrmConfig& cfg, double seconds, double speed,
-                                          double warm_up, RealTimeMode mode = RealTimeMode::LockStep);
+                                          double warm_up, RealTimeMode mode = RealTimeMode::LockStep, double yaw_rate = 0.0);
 
 }  // namespace ship_lrm::lrm
