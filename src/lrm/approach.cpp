@@ -211,10 +211,15 @@ void ShipApproach::record() {
   s.cmy = o.rotor.aero_moment.y() / (q * R);
   s.main_power = o.main_power;
   s.inflow_mean = o.inflow.mean;
-  if (fluid_ && !realtime_) {  // (in real time the LRM thread owns the domain)
+  if (fluid_ && !realtime_) {
     s.wall_cells = fluid_->domain().wall_cells();
     s.voxelisations = fluid_->voxelisations();
     s.face_refreshes = fluid_->face_refreshes();
+  } else if (fluid_) {  // in real time the LRM thread owns the domain: as of the last request it served
+    const ApproachFluid::Counts n = fluid_->counts();
+    s.wall_cells = n.wall_cells;
+    s.voxelisations = n.voxelisations;
+    s.face_refreshes = n.face_refreshes;
   }
 }
 

@@ -76,7 +76,18 @@ rotor::RotorInflow ApproachFluid::serve(const InflowRequest& request) {
     }
   }
   last_state_ = request.state;
+  served_wall_cells_.store(lrm_.domain().wall_cells(), std::memory_order_relaxed);
+  served_voxelisations_.store(voxelisations(), std::memory_order_relaxed);
+  served_face_refreshes_.store(face_refreshes_, std::memory_order_relaxed);
   return lrm_.inflow();
+}
+
+ApproachFluid::Counts ApproachFluid::counts() const {
+  Counts c;
+  c.wall_cells = served_wall_cells_.load(std::memory_order_relaxed);
+  c.voxelisations = served_voxelisations_.load(std::memory_order_relaxed);
+  c.face_refreshes = served_face_refreshes_.load(std::memory_order_relaxed);
+  return c;
 }
 
 }  // namespace ship_lrm::lrm

@@ -160,6 +160,12 @@ TEST(ShipApproach, RealTimeOnTimeIsTheSimulatedRunAndLateStepsArePittPeters) {
     ASSERT_EQ(rt.sample().cmx, sim.sample().cmx) << "t = " << sim.time();
   }
   EXPECT_EQ(rt.realtime_inflow()->stats().deadline_misses, 0);
+  // the LRM's counts reach the report in real time too (as of the last request the LRM thread served;
+  // the simulated-time run has placed the walls for its next step already)
+  ASSERT_GT(sim.sample().wall_cells, 0u);
+  EXPECT_NEAR(static_cast<double>(rt.sample().wall_cells), static_cast<double>(sim.sample().wall_cells), 0.05 * sim.sample().wall_cells);
+  EXPECT_NEAR(static_cast<double>(rt.sample().voxelisations), static_cast<double>(sim.sample().voxelisations), 1.0);
+  EXPECT_GT(rt.sample().voxelisations, 0u);
 
   lrm::ShipApproach missed(c, params, nullptr, lrm::RealTimeMode::LockStep);
   long steps = 0;

@@ -5,6 +5,7 @@
 // domain pose, once per time; the one-process path places them eagerly at the same times, so the
 // domain sees the same operations in the same order either way.
 #pragma once
+#include <atomic>
 #include <memory>
 
 #include "ship_lrm/lrm/approach_config.hpp"
@@ -36,6 +37,14 @@ class ApproachFluid {
   std::size_t voxelisations() const { return walls_ ? walls_->voxelisations() : 0; }
   std::size_t face_refreshes() const { return face_refreshes_; }
 
+  // The LRM's wall cells, the ship's voxelisations and the face refreshes as of the last request
+  // served, readable from any thread (in real time the LRM thread serves while the flight side
+  // reports; it must not touch the domain).
+  struct Counts {
+    std::size_t wall_cells = 0, voxelisations = 0, face_refreshes = 0;
+  };
+  Counts counts() const;
+
  private:
   std::shared_ptr<wake::WakeTable> table_;
   LrmInflow lrm_;
@@ -46,6 +55,7 @@ class ApproachFluid {
   DomainPose placed_pose_;
   rotor::RotorDiskState last_state_;  // the previous request's
   std::size_t face_refreshes_ = 0;
+  std::atomic<std::size_t> served_wall_cells_{0}, served_voxelisations_{0}, served_face_refreshes_{0};  // counts()
 };
 
 // A link that calls a fluid side in the same process (the batch path).
