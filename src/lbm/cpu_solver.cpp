@@ -171,12 +171,13 @@ class CpuSolver final : public Solver {
     }
     LatticeView lanes = v;
     lanes.ncells = kLanes;
-    lanes.force = v.force ? &force[0][0] : nullptr;
+    lanes.force = has_force_field(kForce) ? &force[0][0] : nullptr;
     lanes.aux = &aux[0][0];
-    if (v.force)
+    if (has_force_field(kForce)) {
       for (int a = 0; a < 3; ++a) copy_lanes(force[a], v.force + a * v.ncells + c0, n, 0.0f);
-        // the lane's x through a 32-bit int: a 64-bit integer does not convert to float in AVX2 vectors,
-        // and the frame's forces (which need x) made this loop scalar there (0.4 of the turning step)
+    }
+    // the lane's x through a 32-bit int: a 64-bit integer does not convert to float in AVX2 vectors,
+    // and the frame's forces (which need x) made this loop scalar there (0.4 of the turning step)
 #pragma omp simd
     for (int k = 0; k < static_cast<int>(kLanes); ++k)
       update_segment_cell<kSmagorinsky, kForce, kStoreState>(lanes, k, x0 + static_cast<float>(k), y, z, lane_in, lane_out);
