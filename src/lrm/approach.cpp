@@ -112,9 +112,24 @@ void ShipApproach::step() {
   const auto start = std::chrono::steady_clock::now();
   const bool held = !released();
   heli_->set_body_held(held);
-  heli_->step();
-  if (cfg_.free_flight && held) trim_controls();
-  place(heli_->time(), false, held);
+  try {
+    heli_->step();
+    if (cfg_.free_flight && held) trim_controls();
+    place(heli_->time(), false, held);
+  } catch (const WallOnRotorDisk& e) {
+    if (held) throw;  // on the path: the set-up put the rotor into a wall
+    // flown there (a bank steep enough puts a blade tip below the skids): the flight ends, it is no
+    // error of the input; the step was not completed, so it is not recorded
+    const double t = heli_->time();
+    std::ostringstream m;
+    m.precision(3);
+    m << std::fixed << "struck the " << (e.wall() == "ground" ? "sea" : e.wall()) << " with the rotor at t = " << t << " s, "
+      << ship_.spot.x() - heli_->body().position.x() << " m behind the landing spot (the LRM's " << e.wall()
+      << " wall reached the rotor disk's cells)";
+    end_reason_ = m.str();
+    wall_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return;
+  }
   check_contact();
   wall_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   record();

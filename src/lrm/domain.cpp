@@ -150,9 +150,7 @@ void LrmDomain::update_walls() {
             }
       }
   for (size_t k = 0; k < disk_cells_.size(); ++k)
-    if (owner[disk_cells_[k]] >= 0)
-      throw lbm::ConfigError("LRM: the " + walls_[owner[disk_cells_[k]]]->name() +
-                             " covers part of the rotor disk; move the rotor clear of it");
+    if (owner[disk_cells_[k]] >= 0) throw WallOnRotorDisk(walls_[owner[disk_cells_[k]]]->name());
   const bool same = owner == owner_ && inside == inside_ && moves == wall_moves_;
   bool near_faces = false;  // a wall cell changed in the layers next to those kept clear
   for (std::size_t c = 0; c < owner.size() && !same && !near_faces; ++c)

@@ -184,6 +184,47 @@ TEST(FreeFlight, EndsWhereTheSkidsTouchTheShipOrTheSea) {
   }
 }
 
+// A bank steep enough puts a blade tip below the skids, and the LRM cannot hold a wall on the rotor
+// disk's cells: where its sea wall reaches the disk, the free flight ends there as a rotor strike,
+// with the time and place, not with an input error (before, the run stopped on "invalid input").
+// Here the skids are moved above the rotor, so that the disk meets the sea first.
+TEST(FreeFlight, ARotorStrikeOnTheSeaEndsTheFlight) {
+  const auto drop = [](const flight::HelicopterParameters& params) {
+    lrm::ApproachConfig c = test::tiny_approach("lrm", 2.0);  // the tiny table holds 2 s
+    c.path.start_distance = 150.0;                            // far behind the stern
+    c.path.height = 2.0;
+    c.startup = 0.1;
+    c.free_flight = true;
+    auto a = std::make_unique<lrm::ShipApproach>(c, params);
+    while (!a->released()) a->step();
+    flight::PilotControls k = a->trim().controls;
+    k.collective = 0;
+    a->helicopter().set_controls(k);
+    while (!a->done()) a->step();
+    return a;
+  };
+  const auto params = flight::load_default_bo105();
+  auto raised = params;
+  for (Vec3& p : raised.landing_gear.contact_points) p.z() = -6.0;  // m, body z down: above the rotor
+  const auto skids = drop(params), strike = drop(raised);
+  ASSERT_NE(skids->end_reason().find("hit the sea"), std::string::npos) << skids->end_reason();
+  EXPECT_NE(strike->end_reason().find("struck the sea with the rotor"), std::string::npos) << strike->end_reason();
+  // The water's level (NED z): where the skids' lowest end was when they hit it. The strike's disk,
+  // its edge tilted lowest, must be above the water then and within two lattice cells of it (1.23 m
+  // at N = 16: the disk's cells and the sea's wall cells meet on the lattice, not at the edge itself).
+  double water = -1e9;
+  for (const Vec3& p : params.landing_gear.contact_points)
+    water = std::max(water, (skids->helicopter().body().position + skids->helicopter().body().attitude * p).z());
+  const flight::RigidBodyState& b = strike->helicopter().body();
+  const Vec3 hub = b.position + b.attitude * params.main_rotor.hub_position;
+  const Vec3 axis = b.attitude * Vec3(0, 0, 1);  // the shaft, body z
+  const double edge = hub.z() + params.main_rotor.radius * std::sqrt(std::max(0.0, 1.0 - axis.z() * axis.z()));
+  const double cell = 4.0 * params.main_rotor.radius / 16;
+  EXPECT_GT(water - edge, 0.0) << "the disk's edge is in the water";
+  EXPECT_LT(water - edge, 2.0 * cell) << "the strike came more than two cells before the disk reached the water";
+  EXPECT_LT(strike->time(), 1.99);
+}
+
 // With the LRM's inflow the Pitt-Peters trim's controls are no trim: the held body would accelerate.
 // The free flight's start-up re-trims the four controls (Newton steps with the Pitt-Peters trim's
 // Jacobian, once per revolution) until the heave, roll, pitch and yaw accelerations are gone, so the

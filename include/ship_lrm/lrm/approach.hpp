@@ -59,7 +59,8 @@ class ShipApproach {
   }
   // Real time: the deadline statistics, else nullptr.
   const RealTimeInflow* realtime_inflow() const { return realtime_; }
-  // The duration is over, or (free flight) the landing gear touched the ship or the sea.
+  // The duration is over, or (free flight) the landing gear touched the ship or the sea, or the LRM's
+  // ship or sea walls reached the rotor disk (a rotor strike; the last step is not recorded).
   bool done() const;
   // Free flight: whether the airframe flies now (it is held on the path during the start-up).
   bool released() const;

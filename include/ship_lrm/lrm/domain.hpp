@@ -19,6 +19,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "ship_lrm/lbm/solver.hpp"
 #include "ship_lrm/lbm/units.hpp"
@@ -27,6 +28,19 @@
 #include "ship_lrm/rotor/inflow_model.hpp"
 
 namespace ship_lrm::lrm {
+
+// A wall (wall() names it: "ground", "ship", ...) has reached cells of the rotor disk, where the LRM
+// cannot place it (the disk's forces act on fluid cells). At the start that is bad input; in free
+// flight it is a rotor strike, which ends the flight (ShipApproach).
+class WallOnRotorDisk : public lbm::ConfigError {
+ public:
+  explicit WallOnRotorDisk(const std::string& wall)
+      : lbm::ConfigError("LRM: the " + wall + " covers part of the rotor disk; move the rotor clear of it"), wall_(wall) {}
+  const std::string& wall() const { return wall_; }
+
+ private:
+  std::string wall_;
+};
 
 using rotor::Vec3;
 using Mat3 = Eigen::Matrix3d;
