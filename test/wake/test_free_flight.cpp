@@ -5,6 +5,8 @@
 // start inside the ship refused.
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include "ship_lrm/flight/parameters.hpp"
 #include "ship_lrm/flight/trim.hpp"
 #include "ship_lrm/lrm/approach.hpp"
@@ -23,6 +25,17 @@ lrm::ApproachConfig free_stream_flight(double startup, double duration) {
   c.startup = startup;
   c.free_flight = true;
   return c;
+}
+
+// Runs c to its release, then with the collective down until the run ends.
+std::unique_ptr<lrm::ShipApproach> drop_from_release(const lrm::ApproachConfig& c, const flight::HelicopterParameters& params) {
+  auto a = std::make_unique<lrm::ShipApproach>(c, params);
+  while (!a->released()) a->step();
+  flight::PilotControls k = a->trim().controls;
+  k.collective = 0;
+  a->helicopter().set_controls(k);
+  while (!a->done()) a->step();
+  return a;
 }
 
 Vec3 ground_velocity(const lrm::ShipApproach& a) { return a.helicopter().body().attitude * a.helicopter().body().velocity; }
@@ -150,13 +163,7 @@ TEST(FreeFlight, EndsWhereTheSkidsTouchTheShipOrTheSea) {
     lrm::ApproachConfig c = free_stream_flight(0.1, 2.0);  // the tiny table holds 2 s
     c.path.start_distance = distance;
     c.path.height = height;
-    auto a = std::make_unique<lrm::ShipApproach>(c, params);
-    while (!a->released()) a->step();
-    flight::PilotControls k = a->trim().controls;
-    k.collective = 0;
-    a->helicopter().set_controls(k);
-    while (!a->done()) a->step();
-    return a;
+    return drop_from_release(c, params);
   };
   const auto deck = drop(5.0, 2.5);  // over the deck, the skids 1.3 m above it
   EXPECT_LT(deck->time(), 1.5);
@@ -195,13 +202,7 @@ TEST(FreeFlight, ARotorStrikeOnTheSeaEndsTheFlight) {
     c.path.height = 2.0;
     c.startup = 0.1;
     c.free_flight = true;
-    auto a = std::make_unique<lrm::ShipApproach>(c, params);
-    while (!a->released()) a->step();
-    flight::PilotControls k = a->trim().controls;
-    k.collective = 0;
-    a->helicopter().set_controls(k);
-    while (!a->done()) a->step();
-    return a;
+    return drop_from_release(c, params);
   };
   const auto params = flight::load_default_bo105();
   auto raised = params;
