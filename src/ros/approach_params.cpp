@@ -56,7 +56,7 @@ lrm::ApproachConfig approach_config(const ros::NodeHandle& nh, bool table_here) 
   c.lrm.nodes = nodes;
   read_number(nh, "reach", c.lrm.reach);
   if (!(c.lrm.reach >= 1.0 && c.lrm.reach <= 8.0))
-    throw ParamError("parameter " + where(nh, "reach") + " must lie in [1, 8] (domain edge / 4R)");
+    throw ParamError("parameter " + where(nh, "reach") + " must lie in [1, 8] (domain edge / 4R), got " + std::to_string(c.lrm.reach));
   std::string backend = "auto";
   read(nh, "backend", backend);
   try {
