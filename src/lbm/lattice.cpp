@@ -352,9 +352,12 @@ std::vector<char> Lattice::support_marks() const {
     const std::size_t q = index(p[0], p[1], p[2]);
     if (!is_wall(static_cast<CellType>(type_[q] & ~kGeneralBit))) mark[q] = 1;
   };
+  // open-boundary cells lie on the faces only (set_open): rows inside the lattice have two of them
+  // (at x = 0 and x = nx - 1), the others are walked whole
   for (int z = 0; z < n[2]; ++z)
-    for (int y = 0; y < n[1]; ++y)
-      for (int x = 0; x < n[0]; ++x) {
+    for (int y = 0; y < n[1]; ++y) {
+      const bool inner_row = y > 0 && z > 0 && y < n[1] - 1 && z < n[2] - 1;
+      for (int x = 0; x < n[0]; x += (inner_row && x == 0) ? std::max(n[0] - 1, 1) : 1) {
         if (!is_open_boundary(static_cast<CellType>(type_[index(x, y, z)] & ~kGeneralBit))) continue;
         const int p0[3] = {x, y, z};
         int step[3] = {0, 0, 0}, faces = 0;
@@ -379,6 +382,7 @@ std::vector<char> Lattice::support_marks() const {
           if (p[0] >= 0 && p[0] < n[0] && p[1] >= 0 && p[1] < n[1] && p[2] >= 0 && p[2] < n[2]) mark_fluid(p);
         }
       }
+    }
   return mark;
 }
 
@@ -426,51 +430,78 @@ void Lattice::finalize() {
         if (!inner_row || x == 0 || x == n[0] - 1) masks[c] = link_mask(x, y, z, face_links);
       }
     }
-  for (int z = 0; z < n[2]; ++z)
-    for (int y = 0; y < n[1]; ++y)
-      for (int x = 0; x < n[0]; ++x) {
-        const std::size_t c = index(x, y, z);
-        const auto t = static_cast<CellType>(type_[c]);
-        if (is_wall(t)) continue;
-        if (is_open_boundary(t)) {
-          const int f = open_normal(x, y, z);
-          bnd_cell_.push_back(static_cast<std::uint32_t>(c));
-          bnd_normal_.push_back(static_cast<std::uint8_t>(f));
-          bnd_mask_.push_back(masks[c]);
-          std::array<float, 4> v{0, 0, 0, 0};
-          const auto it = values.find(static_cast<std::uint32_t>(c));
-          if (it != values.end()) {
-            v = it->second;
-          } else {
-            const FaceCondition& fc = cfg_.faces[f];
-            if (t == CellType::VelocityInlet) v = {fc.velocity[0], fc.velocity[1], fc.velocity[2], 0.0f};
-            if (t == CellType::PressureOutlet) v = {fc.density, 0, 0, 0};
-            if (t == CellType::ImpedanceOutlet) v = {1.0f, 0, 0, 0};
+  // The lists of the cells by kind, in cell order, made by slabs of z in parallel and joined in
+  // order (a segment never leaves its row, so none crosses a slab; same lists as one pass).
+  struct Lists {
+    std::vector<Segment> segments;
+    std::vector<std::uint32_t> general, general_mask, bnd_cell, bnd_mask;
+    std::vector<std::uint8_t> bnd_normal;
+    std::vector<float> bnd_value;
+  };
+  const int slabs = std::min(n[2], 16);
+  std::vector<Lists> slab(slabs);
+#pragma omp parallel for schedule(dynamic)
+  for (int k = 0; k < slabs; ++k) {
+    Lists& o = slab[k];
+    for (int z = n[2] * k / slabs; z < n[2] * (k + 1) / slabs; ++z)
+      for (int y = 0; y < n[1]; ++y)
+        for (int x = 0; x < n[0]; ++x) {
+          const std::size_t c = index(x, y, z);
+          const auto t = static_cast<CellType>(type_[c]);
+          if (is_wall(t)) continue;
+          if (is_open_boundary(t)) {
+            const int f = open_normal(x, y, z);
+            o.bnd_cell.push_back(static_cast<std::uint32_t>(c));
+            o.bnd_normal.push_back(static_cast<std::uint8_t>(f));
+            o.bnd_mask.push_back(masks[c]);
+            std::array<float, 4> v{0, 0, 0, 0};
+            const auto it = values.find(static_cast<std::uint32_t>(c));
+            if (it != values.end()) {
+              v = it->second;
+            } else {
+              const FaceCondition& fc = cfg_.faces[f];
+              if (t == CellType::VelocityInlet) v = {fc.velocity[0], fc.velocity[1], fc.velocity[2], 0.0f};
+              if (t == CellType::PressureOutlet) v = {fc.density, 0, 0, 0};
+              if (t == CellType::ImpedanceOutlet) v = {1.0f, 0, 0, 0};
+            }
+            o.bnd_value.insert(o.bnd_value.end(), v.begin(), v.end());
+            continue;
           }
-          bnd_value_.insert(bnd_value_.end(), v.begin(), v.end());
-          continue;
+          // Cells with resting walls among their neighbours stream through their link mask; runs of
+          // cells with equal class, mask and reflection rule form one vectorised segment. Bulk cells
+          // (mask 0) are segments too. Cells next to moving walls take the checked path.
+          const std::uint32_t mask = masks[c];
+          const std::uint32_t cls = static_cast<std::uint32_t>(cell_class(n, x, y, z));
+          const std::uint8_t store = support[c] ? 1 : 0;
+          if (mask != 0) type_[c] |= kGeneralBit;  // the GPU kernel's checked path
+          if (mask & kMovingWallLink) {
+            o.general.push_back(static_cast<std::uint32_t>(c));
+            o.general_mask.push_back(mask);
+            continue;
+          }
+          // A segment stays in one row (x > 0): the solvers count its cells' x from the first one.
+          Segment* last = o.segments.empty() ? nullptr : &o.segments.back();
+          if (last && x > 0 && last->first + last->count == c && last->cell_class == cls && last->link_mask == mask &&
+              last->reflection == tag_[c]) {
+            ++last->count;
+            last->store_state |= store;
+          } else
+            o.segments.push_back({static_cast<std::uint32_t>(c), 1, cls, mask, tag_[c], store});
         }
-        // Cells with resting walls among their neighbours stream through their link mask; runs of
-        // cells with equal class, mask and reflection rule form one vectorised segment. Bulk cells
-        // (mask 0) are segments too. Cells next to moving walls take the checked path.
-        const std::uint32_t mask = masks[c];
-        const std::uint32_t cls = static_cast<std::uint32_t>(cell_class(n, x, y, z));
-        const std::uint8_t store = support[c] ? 1 : 0;
-        if (mask != 0) type_[c] |= kGeneralBit;  // the GPU kernel's checked path
-        if (mask & kMovingWallLink) {
-          general_.push_back(static_cast<std::uint32_t>(c));
-          general_mask_.push_back(mask);
-          continue;
-        }
-        // A segment stays in one row (x > 0): the solvers count its cells' x from the first one.
-        Segment* last = segments_.empty() ? nullptr : &segments_.back();
-        if (last && x > 0 && last->first + last->count == c && last->cell_class == cls && last->link_mask == mask &&
-            last->reflection == tag_[c]) {
-          ++last->count;
-          last->store_state |= store;
-        } else
-          segments_.push_back({static_cast<std::uint32_t>(c), 1, cls, mask, tag_[c], store});
-      }
+  }
+  const auto join = [&](auto& to, auto member) {
+    std::size_t size = to.size();
+    for (const Lists& o : slab) size += (o.*member).size();
+    to.reserve(size);
+    for (const Lists& o : slab) to.insert(to.end(), (o.*member).begin(), (o.*member).end());
+  };
+  join(segments_, &Lists::segments);
+  join(general_, &Lists::general);
+  join(general_mask_, &Lists::general_mask);
+  join(bnd_cell_, &Lists::bnd_cell);
+  join(bnd_mask_, &Lists::bnd_mask);
+  join(bnd_normal_, &Lists::bnd_normal);
+  join(bnd_value_, &Lists::bnd_value);
   // The open boundaries' velocity-gradient stencils, by the function the solvers' kernels share.
   LatticeView host;
   for (int a = 0; a < 3; ++a) host.n[a] = n[a];

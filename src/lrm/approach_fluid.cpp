@@ -79,6 +79,9 @@ rotor::RotorInflow ApproachFluid::serve(const InflowRequest& request) {
   served_wall_cells_.store(lrm_.domain().wall_cells(), std::memory_order_relaxed);
   served_voxelisations_.store(voxelisations(), std::memory_order_relaxed);
   served_face_refreshes_.store(face_refreshes_, std::memory_order_relaxed);
+  served_wall_changes_.store(lrm_.domain().rebuilds(), std::memory_order_relaxed);
+  served_face_restarts_.store(lrm_.domain().face_restarts(), std::memory_order_relaxed);
+  served_wall_seconds_.store(lrm_.domain().wall_seconds(), std::memory_order_relaxed);
   return lrm_.inflow();
 }
 
@@ -87,6 +90,9 @@ ApproachFluid::Counts ApproachFluid::counts() const {
   c.wall_cells = served_wall_cells_.load(std::memory_order_relaxed);
   c.voxelisations = served_voxelisations_.load(std::memory_order_relaxed);
   c.face_refreshes = served_face_refreshes_.load(std::memory_order_relaxed);
+  c.wall_changes = served_wall_changes_.load(std::memory_order_relaxed);
+  c.face_restarts = served_face_restarts_.load(std::memory_order_relaxed);
+  c.wall_seconds = served_wall_seconds_.load(std::memory_order_relaxed);
   return c;
 }
 

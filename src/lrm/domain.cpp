@@ -2,6 +2,7 @@
 #include "ship_lrm/lrm/domain.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -102,6 +103,12 @@ void LrmDomain::add_wall(std::shared_ptr<WallSurface> wall) {
 }
 
 void LrmDomain::update_walls() {
+  const auto start = std::chrono::steady_clock::now();
+  struct Timer {  // wall_seconds_, also when the change throws
+    const std::chrono::steady_clock::time_point& start;
+    double& total;
+    ~Timer() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+  } timer{start, wall_seconds_};
   // voxelise: cell centres inside a body
   std::vector<std::int16_t> owner(owner_.size(), -1), inside(owner_.size(), -1);
   std::vector<bool> moves(walls_.size());
@@ -162,6 +169,7 @@ void LrmDomain::update_walls() {
   if (!same) {
     rebuild(true, near_faces);
     ++rebuilds_;
+    if (near_faces) ++face_restarts_;
   }
   push_wall_motions();  // the motions themselves change without a rebuild
 }
@@ -188,12 +196,14 @@ void LrmDomain::push_face_values() {
   if (body_faces_.empty()) return solver_->set_boundary_values(face_values_);
   std::vector<float> values = face_values_;
   const auto& cells = solver_->lattice().boundary_cells();
+  std::vector<lbm::WallMotion> motions(walls_.size());  // per body, not per cell (every step low over the sea)
+  for (size_t w = 0; w < walls_.size(); ++w)
+    if (wall_moves_[w]) motions[w] = lattice_motion(*walls_[w]);
+  const auto e = static_cast<std::uint32_t>(edge_);  // (boundary cells are 32-bit indices)
   for (const auto& [k, w] : body_faces_) {
-    const lbm::WallMotion m = wall_moves_[w] ? lattice_motion(*walls_[w]) : lbm::WallMotion{};
-    const std::size_t c = cells[k];
-    const float x = static_cast<float>(c % edge_), y = static_cast<float>((c / edge_) % edge_),
-                z = static_cast<float>(c / (static_cast<std::size_t>(edge_) * edge_));
-    lbm::rigid_velocity(m, x, y, z, &values[4 * k]);
+    const std::uint32_t c = cells[k];
+    const float x = static_cast<float>(c % e), y = static_cast<float>((c / e) % e), z = static_cast<float>(c / (e * e));
+    lbm::rigid_velocity(motions[w], x, y, z, &values[4 * k]);
   }
   solver_->set_boundary_values(values);
 }
@@ -249,6 +259,7 @@ void LrmDomain::rebuild(bool carry_flow, bool near_faces) {
   const std::vector<std::uint32_t> old_boundary = solver_ ? solver_->lattice().boundary_cells() : std::vector<std::uint32_t>{};
   solver_ = lbm::make_solver(std::move(lat), cfg_.backend);
   if (solver_->lattice().boundary_cells() != old_boundary) face_air_stale_ = far_field_stale_ = true;  // walls moved through a face
+  face_positions_.clear();  // a new solver: its boundary cells (set_motion lists them again)
   find_body_faces();
   if (!disk_forces_.empty()) solver_->set_cell_forces(disk_cells_, disk_forces_);
   if (motion_set_) {
@@ -312,7 +323,11 @@ void LrmDomain::set_motion(const Motion& m) {
   } else if (!faces_same) {
     const auto& cells = solver_->lattice().boundary_cells();
     const long ncells = static_cast<long>(cells.size());
-    const auto cell_position = [&](long k) { return position(cells[k]); };
+    if (face_positions_.size() != cells.size()) {  // once per solver: in a manoeuvre this runs every step
+      face_positions_.resize(cells.size());
+      for (long k = 0; k < ncells; ++k) face_positions_[k] = position(cells[k]);
+    }
+    const auto cell_position = [&](long k) { return face_positions_[k]; };
     if (grid_ && face_air_stale_) {  // the grid's air at each face cell (grid_feed.hpp, as the CUDA kernel)
       face_air_.resize(cells.size());
 #pragma omp parallel for schedule(static)

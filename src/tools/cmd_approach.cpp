@@ -151,6 +151,9 @@ std::function<int()> add_approach_command(CLI::App& app) {
     if (!run.end_reason().empty()) std::cout << "approach: free flight " << run.end_reason() << "\n";
     std::cout << "wrote " << (dir / "approach.csv").string() << " (" << run.sample().time << " s simulated, " << run.wall_seconds()
               << " s in the coupled step: t_clock/t_sim " << run.wall_seconds() / run.sample().time << ")\n";
+    if (const auto n = run.fluid_counts(); n && n->wall_changes > 0)
+      std::cout << "LRM walls: the wall cells changed " << n->wall_changes << " times (" << n->face_restarts
+                << " of them next to the faces, where the flow restarts at equilibrium); placing walls took " << n->wall_seconds << " s\n";
     if (const auto* rt = run.realtime_inflow()) {
       const lrm::RealTimeStats st = rt->stats();
       std::cout << "real time ("

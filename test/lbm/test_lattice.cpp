@@ -1,6 +1,7 @@
 // Lattice descriptor, set-up validation (bad input), divergence guard and output.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -149,7 +150,8 @@ TEST(Walls, ClosedBoxMixedWallsConservesMass) {
 // The link mask finalize hands the solvers for every fluid-like cell (bit i: the neighbour at
 // c + c_i is a wall or lies beyond a non-periodic face; kMovingWallLink: one of those moves), found
 // here by walking to each neighbour, on a lattice that mixes periodic, moving-wall, wall and open
-// faces with resting and moving wall cells inside, next to the faces too.
+// faces with resting and moving wall cells inside, next to the faces too; and the lists of cells it
+// hands them (segments, general cells, boundary cells) are in cell order.
 TEST(Walls, LinkMasksMatchAWalkToEachNeighbour) {
   LatticeConfig cfg = periodic_config(7, 8, 9, 0.05f);  // x periodic
   cfg.faces[2].type = FaceType::MovingWall;
@@ -212,6 +214,15 @@ TEST(Walls, LinkMasksMatchAWalkToEachNeighbour) {
   }
   EXPECT_EQ(checked + walls, lat.cells());  // every fluid-like cell once
   EXPECT_GT(moving_links, 2u * 7u);         // the moving face's row and the moving cells' neighbours
+  // each list in cell order (finalize makes them by slabs of z in parallel and joins them; the solvers
+  // find a cell's segment by binary search)
+  const auto& segs = lat.bulk_segments();
+  for (std::size_t k = 1; k < segs.size(); ++k) EXPECT_LT(segs[k - 1].first + segs[k - 1].count - 1, segs[k].first) << "segment " << k;
+  const auto ascending = [](const std::vector<std::uint32_t>& v) {
+    return std::adjacent_find(v.begin(), v.end(), std::greater_equal<>()) == v.end();
+  };
+  EXPECT_TRUE(ascending(lat.general_cells()));
+  EXPECT_TRUE(ascending(lat.boundary_cells()));
 }
 
 // The VTK writer produces an image-data file (header and size) and reports unwritable paths.

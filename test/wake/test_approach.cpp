@@ -166,6 +166,19 @@ TEST(ShipApproach, RealTimeOnTimeIsTheSimulatedRunAndLateStepsArePittPeters) {
   EXPECT_NEAR(static_cast<double>(rt.sample().wall_cells), static_cast<double>(sim.sample().wall_cells), 0.05 * sim.sample().wall_cells);
   EXPECT_NEAR(static_cast<double>(rt.sample().voxelisations), static_cast<double>(sim.sample().voxelisations), 1.0);
   EXPECT_GT(rt.sample().voxelisations, 0u);
+  // the changes of the wall cells and the time spent placing walls (the approach's summary line):
+  // the domain's own count, as of the last request served (the simulated run may have changed the
+  // walls once more since), the same in real time
+  const auto ns = sim.fluid_counts(), nr = rt.fluid_counts();
+  ASSERT_TRUE(ns && nr);
+  const std::size_t changes = sim.lrm_domain()->rebuilds();
+  ASSERT_GT(changes, 1u) << "the moving ship must change the wall cells in this case";
+  EXPECT_LE(ns->wall_changes, changes);
+  EXPECT_GE(ns->wall_changes + 1, changes);
+  EXPECT_LE(ns->face_restarts, ns->wall_changes);
+  EXPECT_NEAR(static_cast<double>(nr->wall_changes), static_cast<double>(ns->wall_changes), 1.0);
+  EXPECT_GT(ns->wall_seconds, 0.0);
+  EXPECT_GT(nr->wall_seconds, 0.0);
 
   lrm::ShipApproach missed(c, params, nullptr, lrm::RealTimeMode::LockStep);
   long steps = 0;

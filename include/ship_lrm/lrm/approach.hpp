@@ -81,6 +81,10 @@ class ShipApproach {
   // LBM steps the real-time LRM dropped to catch up (ApproachFluid::set_catch_up_limit); read it
   // when the run is over (the LRM thread owns the domain while it runs).
   long dropped_lrm_steps() const { return fluid_ ? fluid_->dropped_steps() : 0; }
+  // The LRM side's counts as of the last request it served (any thread), nullopt without an LRM here.
+  std::optional<ApproachFluid::Counts> fluid_counts() const {
+    return fluid_ ? std::optional<ApproachFluid::Counts>(fluid_->counts()) : std::nullopt;
+  }
   // With LRM inflow: the flight side's end of the link (whether it fell back to Pitt-Peters), else
   // nullptr. In real time it runs in the LRM thread: read only lost(), lost_reason() (once lost) and
   // fallback_calls() from here.

@@ -37,11 +37,13 @@ class ApproachFluid {
   std::size_t voxelisations() const { return walls_ ? walls_->voxelisations() : 0; }
   std::size_t face_refreshes() const { return face_refreshes_; }
 
-  // The LRM's wall cells, the ship's voxelisations and the face refreshes as of the last request
-  // served, readable from any thread (in real time the LRM thread serves while the flight side
-  // reports; it must not touch the domain).
+  // The LRM's wall cells, the ship's voxelisations, the face refreshes and the changes of the wall
+  // cells (those next to the faces restart the flow; LrmDomain::update_walls) with the wall-clock
+  // time spent placing walls, as of the last request served, readable from any thread (in real time
+  // the LRM thread serves while the flight side reports; it must not touch the domain).
   struct Counts {
-    std::size_t wall_cells = 0, voxelisations = 0, face_refreshes = 0;
+    std::size_t wall_cells = 0, voxelisations = 0, face_refreshes = 0, wall_changes = 0, face_restarts = 0;
+    double wall_seconds = 0;
   };
   Counts counts() const;
 
@@ -56,6 +58,8 @@ class ApproachFluid {
   rotor::RotorDiskState last_state_;  // the previous request's
   std::size_t face_refreshes_ = 0;
   std::atomic<std::size_t> served_wall_cells_{0}, served_voxelisations_{0}, served_face_refreshes_{0};  // counts()
+  std::atomic<std::size_t> served_wall_changes_{0}, served_face_restarts_{0};
+  std::atomic<double> served_wall_seconds_{0};
 };
 
 // A link that calls a fluid side in the same process (the batch path).

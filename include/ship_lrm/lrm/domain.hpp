@@ -154,7 +154,9 @@ class LrmDomain {
   // without re-voxelising (a wall that starts or stops moving re-voxelises).
   void update_wall_motions();
   std::size_t wall_cells() const { return wall_cells_; }
-  std::size_t rebuilds() const { return rebuilds_; }  // changes of the wall cells after the first (moving walls)
+  std::size_t rebuilds() const { return rebuilds_; }            // changes of the wall cells after the first (moving walls)
+  std::size_t face_restarts() const { return face_restarts_; }  // of those, the ones next to the faces (the flow restarted)
+  double wall_seconds() const { return wall_seconds_; }         // wall-clock time in update_walls (voxelising and changing)
   // LrmConfig::rotor_far_field over flat ground parallel to the disk, `height` m below the hub (where
   // the bounce-back wall lies, half-way between the last fluid and the first wall cell): the far field
   // gets the ground's mirror image (rotor::VortexCylinderWake::set_ground), so that the faces let the
@@ -189,7 +191,8 @@ class LrmDomain {
     std::uint64_t serial[2] = {0, 0};
   };
   std::optional<FaceGrid> grid_;
-  std::vector<Vec3> face_air_;  // host path: the grid's air per boundary cell (mr axes, m/s)
+  std::vector<Vec3> face_air_;        // host path: the grid's air per boundary cell (mr axes, m/s)
+  std::vector<Vec3> face_positions_;  // position() of each boundary cell of the solver (empty: not listed yet)
   // LrmConfig::rotor_far_field: the rotor's induced velocity per boundary cell (m/s, mr axes), and the
   // thrust and air it was computed for.
   std::vector<Vec3> far_field_;
@@ -216,7 +219,8 @@ class LrmDomain {
   bool find_body_faces();           // body_faces_ for the solver's boundary cells; true if they changed
   void push_face_values();          // face_values_ with the bodies' velocities at body_faces_, to the solver
   std::vector<bool> wall_moves_;    // per wall: built as a moving wall
-  std::size_t wall_cells_ = 0, rebuilds_ = 0;
+  std::size_t wall_cells_ = 0, rebuilds_ = 0, face_restarts_ = 0;
+  double wall_seconds_ = 0;
   std::vector<float> disk_forces_;  // lattice force densities of the disk cells (kept across rebuilds)
   // near_faces: wall cells changed within kClearLayers + 1 layers of a face
   void rebuild(bool carry_flow, bool near_faces = false);
