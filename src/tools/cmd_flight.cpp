@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "lrm_face_options.hpp"
 #include "ship_lrm/flight/doublet.hpp"
 #include "ship_lrm/flight/trim.hpp"
 #include "ship_lrm/lrm/lrm_inflow.hpp"
@@ -33,6 +34,7 @@ std::function<int()> add_trim_command(CLI::App& app) {
     int nodes = 64;
     double reach = 1.25, warm_up = 3.0;
     bool overwrite = false, no_plot = false;
+    LrmFaceOptions face;
   };
   auto o = std::make_shared<Opts>();
   cmd->add_option("--speeds", o->speeds, "speeds in m/s: start:step:stop or a comma list")->capture_default_str();
@@ -45,6 +47,7 @@ std::function<int()> add_trim_command(CLI::App& app) {
   cmd->add_option("--warm-up", o->warm_up, "lrm: s simulated before the first trim evaluation")
       ->check(CLI::Range(0.0, 600.0))
       ->capture_default_str();
+  o->face.add_to(*cmd);  // lrm: the domain's faces, as in `sweep inflow`
   cmd->add_option("--out", o->out, "output directory (trim.csv, trim.png)")->required();
   cmd->add_option("--config", o->config, "helicopter parameter file (default: the shipped config/bo105.yaml)");
   cmd->add_option("--reference", o->reference, "CSV of measured trim data with the same column names, plotted as points");
@@ -64,6 +67,7 @@ std::function<int()> add_trim_command(CLI::App& app) {
       c.backend = lbm::parse_backend(o->backend);
       c.radius = p.main_rotor.radius;
       c.density = p.density;
+      o->face.apply(c);
       inflow = std::make_unique<lrm::LrmInflow>(lrm::config_for_stream(c, *std::max_element(speeds.begin(), speeds.end())), o->warm_up);
     }
     Helicopter heli(p, std::move(inflow));
@@ -73,7 +77,8 @@ std::function<int()> add_trim_command(CLI::App& app) {
            "lateral_pct,pedal_pct,collective_deg,forward_cyclic_deg,right_cyclic_deg,tail_pitch_deg,pitch_deg,roll_deg,thrust_N,"
            "induced_velocity_m_s,coning_deg,disk_tilt_forward_deg,disk_tilt_right_deg";
     if (lrm)
-      csv << ",pp_converged,pp_total_power_kW,pp_collective_pct,pp_longitudinal_pct,pp_lateral_pct,pp_pedal_pct,pp_pitch_deg,pp_roll_deg";
+      csv << ",pp_converged,pp_total_power_kW,pp_collective_pct,pp_longitudinal_pct,pp_lateral_pct,pp_pedal_pct,pp_pitch_deg,pp_roll_deg,"
+             "lrm_faces";
     csv << "\n";
     TrimOptions opt, pp_opt;
     // With the LRM, each speed starts from the Pitt-Peters trim at that speed (thesis 8.5: the coupled
@@ -110,7 +115,7 @@ std::function<int()> add_trim_command(CLI::App& app) {
       if (lrm)
         csv << "," << (pp.converged ? 1 : 0) << "," << pp.total_power / 1e3 << "," << pp.controls.collective << ","
             << pp.controls.longitudinal << "," << pp.controls.lateral << "," << pp.controls.pedal << "," << pp.pitch * kDeg << ","
-            << pp.roll * kDeg;
+            << pp.roll * kDeg << "," << o->face.label();
       csv << "\n";
     }
     csv.close();
@@ -131,6 +136,7 @@ std::function<int()> add_doublet_command(CLI::App& app) {
     std::string axis = "lateral", out, config, engine = "governed";
     double speed = 13.37, amplitude = 10, start = 1, pulse = 1, duration = 8;
     bool overwrite = false, no_plot = false;
+    LrmFaceOptions face;
   };
   auto o = std::make_shared<Opts>();
   cmd->add_option("--axis", o->axis, "control moved: lateral, longitudinal, collective or pedal")

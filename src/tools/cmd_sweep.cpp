@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "lrm_face_options.hpp"
 #include "ship_lrm/lbm/lattice.hpp"
 #include "ship_lrm/lrm/inflow_sweep.hpp"
 #include "ship_lrm/rotor/momentum_theory.hpp"
@@ -18,44 +19,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Face set-ups of the LRM domain for the isolated-rotor sweeps (issue 4, acceptances 2 and 4), applied
-// to cfg's faces.
-void apply_faces(const std::string& name, lrm::LrmConfig& cfg) {
-  const lrm::LrmConfig thesis;
-  cfg.faces = thesis.faces;  // velocity front, left, right; impedance back, top, bottom
-  cfg.entraining_pressure_faces = false;
-  if (name == "thesis") return;
-  if (name == "open") {  // impedance on all six (the author's earlier set-up, thesis 8.2.3)
-    cfg.faces.fill(lbm::FaceType::ImpedanceOutlet);
-    return;
-  }
-  if (name == "open-sides") {  // velocity front only: the wall jet may leave sideways
-    cfg.faces[2] = cfg.faces[3] = lbm::FaceType::ImpedanceOutlet;
-    return;
-  }
-  if (name == "pressure") {  // velocity front and sides; pressure outlets (ambient density) back, top, bottom
-    for (int f : {0, 4, 5}) cfg.faces[f] = lbm::FaceType::PressureOutlet;
-    return;
-  }
-  if (name == "ambient" || name == "ambient-sides") {
-    // entraining pressure faces (LrmConfig::entraining_pressure_faces) on all six faces, or on all
-    // but the front, which stays a velocity face and holds the stream
-    cfg.faces.fill(lbm::FaceType::PressureOutlet);
-    if (name == "ambient-sides") cfg.faces[1] = lbm::FaceType::VelocityInlet;
-    cfg.entraining_pressure_faces = true;
-    return;
-  }
-  throw lbm::ConfigError("unknown face set-up '" + name + "' (thesis, open-sides, open, pressure, ambient or ambient-sides)");
-}
-
 // Options both isolated-rotor sweeps share: the domain, the rotor's load and averaging, the output.
 struct IsolatedRotorOptions {
   int nodes = 64;
   double reach = 1.25, thrust = 24525, settle = 4, average = 2, lattice_velocity = lrm::LrmConfig{}.reference_velocity;
-  double outlet_sigma = 0.0;
-  std::vector<std::string> relaxed_faces = {"back", "top", "bottom"};
-  std::string backend = "auto", out, faces = "thesis";
-  bool overwrite = false, no_plot = false, planes = false, far_field = false;
+  LrmFaceOptions face;
+  std::string backend = "auto", out;
+  bool overwrite = false, no_plot = false, planes = false;
 
   void add_to(CLI::App& cmd, const std::string& outputs) {
     cmd.add_option("--N", nodes, "lattice nodes per 4R")->check(CLI::Range(16, 512))->capture_default_str();
@@ -69,22 +39,7 @@ struct IsolatedRotorOptions {
                    "a larger value lowers the lattice Mach number (compressibility check) and shrinks the time step")
         ->check(CLI::Range(1.0, 1e4))
         ->capture_default_str();
-    cmd.add_option("--faces", faces,
-                   "face set-up: thesis (velocity front/sides), open-sides, open (impedance everywhere), pressure (pressure outlets "
-                   "back/top/bottom), ambient (entraining pressure faces everywhere: air leaves at the ambient pressure and enters "
-                   "from rest; hover only), ambient-sides (velocity front, entraining pressure faces elsewhere)")
-        ->check(CLI::IsMember({"thesis", "open-sides", "open", "pressure", "ambient", "ambient-sides"}))
-        ->capture_default_str();
-    cmd.add_option("--outlet-sigma", outlet_sigma,
-                   "impedance faces: relaxation of their pressure to the ambient (Poinsot & Lele 1992 sigma; 0: the thesis' outlet)")
-        ->check(CLI::Range(0.0, 10.0))
-        ->capture_default_str();
-    cmd.add_option("--relaxed-faces", relaxed_faces, "impedance faces that --outlet-sigma applies to")
-        ->check(CLI::IsMember({"back", "front", "left", "right", "top", "bottom"}))
-        ->capture_default_str();
-    cmd.add_flag("--rotor-far-field", far_field,
-                 "the faces' air includes the rotor's own induced velocity (vortex-cylinder wake of the uniformly loaded disk), "
-                 "which takes out most of the faces' interference");
+    face.add_to(cmd);
     cmd.add_option("--out", out, "output directory (" + outputs + ")")->required();
     cmd.add_flag("--overwrite", overwrite, "replace existing output files");
     cmd.add_flag("--no-plot", no_plot, "write the CSV only");
@@ -92,27 +47,15 @@ struct IsolatedRotorOptions {
                  "also write each case's time-averaged x-z plane through the hub (plane_*.csv, .png: velocity relative to the "
                  "rotor, streamlines)");
   }
-  // The faces column of the CSVs: the set-up, and the relaxed outlets when there are any.
-  std::string faces_label() const {
-    std::ostringstream s;
-    s << faces;
-    if (outlet_sigma > 0) {
-      s << ";sigma=" << outlet_sigma << ":";
-      for (size_t k = 0; k < relaxed_faces.size(); ++k) s << (k ? "/" : "") << relaxed_faces[k];
-    }
-    if (far_field) s << ";rotor-far-field";
-    return s.str();
-  }
+  // The faces column of the CSVs.
+  std::string faces_label() const { return face.label(); }
   lrm::LrmConfig config() const {
     lrm::LrmConfig cfg;
     cfg.nodes = nodes;
     cfg.reach = reach;
     cfg.reference_velocity = lattice_velocity;
     cfg.backend = lbm::parse_backend(backend);
-    apply_faces(faces, cfg);
-    const std::vector<std::string> names = {"back", "front", "left", "right", "top", "bottom"};
-    for (const auto& f : relaxed_faces) cfg.outlet_sigma[std::find(names.begin(), names.end(), f) - names.begin()] = outlet_sigma;
-    cfg.rotor_far_field = far_field;
+    face.apply(cfg);
     return cfg;
   }
   lrm::IsolatedRotorCase rotor_case(double speed) const {
@@ -183,7 +126,7 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
     for (double h : heights)
       if (!(h > 0)) throw lbm::ConfigError("--heights: z/R must be > 0, got " + std::to_string(h));
     if (hover && ground->get_option("--faces")->count() == 0) {
-      o->faces = "ambient";
+      o->face.faces = "ambient";
       std::cout << "hover in ground effect: faces ambient (entraining pressure faces; the thesis' faces hold the wall jet in: "
                    "--faces thesis)\n";
     }

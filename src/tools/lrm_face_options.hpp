@@ -1,0 +1,28 @@
+// The LRM domain's face options of the command-line tools (`sweep inflow`, `sweep ground`, `trim
+// --inflow lrm`): the set-up of the six faces, the impedance faces' relaxation to the ambient
+// pressure and the rotor's own far field in the faces' air (lrm::LrmConfig).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "ship_lrm/lrm/domain.hpp"
+
+namespace ship_lrm::tools {
+
+struct LrmFaceOptions {
+  std::string faces = "thesis";
+  double outlet_sigma = 0.0;
+  std::vector<std::string> relaxed_faces = {"back", "top", "bottom"};
+  bool far_field = false;
+
+  // --faces, --outlet-sigma, --relaxed-faces, --rotor-far-field
+  void add_to(CLI::App& cmd);
+  // The faces column of the CSVs: the set-up, the relaxed outlets when there are any, the far field.
+  std::string label() const;
+  // Sets cfg's faces, outlet relaxation and far field; lbm::ConfigError for an unknown set-up.
+  void apply(lrm::LrmConfig& cfg) const;
+};
+
+}  // namespace ship_lrm::tools
