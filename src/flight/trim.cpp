@@ -122,6 +122,7 @@ TrimResult trim(Helicopter& heli, const TrimTarget& target, const TrimOptions& o
       std::fprintf(stderr, "trim %d: x = [%g %g %g %g %g %g] residual %g = [%g %g %g %g %g %g]\n", res.iterations, x[0], x[1], x[2], x[3],
                    x[4], x[5], res.residual, cur.residual[0], cur.residual[1], cur.residual[2], cur.residual[3], cur.residual[4],
                    cur.residual[5]);
+    if (opt.progress) opt.progress(res.iterations, res.residual);
     if (!std::isfinite(res.residual)) break;
     if (res.residual < opt.tolerance) {
       res.converged = true;

@@ -1,10 +1,12 @@
 // `ship_lrm trim` and `ship_lrm doublet`: Bo 105 flight-model sweeps, written as CSV (header row) and
 // plotted to PNG by scripts/plot_flight.py.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -81,6 +83,14 @@ std::function<int()> add_trim_command(CLI::App& app) {
              "lrm_faces";
     csv << "\n";
     TrimOptions opt, pp_opt;
+    double speed = 0;  // the speed being trimmed, for the progress lines
+    const auto wall_start = std::chrono::steady_clock::now();
+    const auto progress = [&](int iteration, double residual) {
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+      std::cout << "  LRM trim at " << speed << " m/s: iteration " << iteration << ", residual " << residual << " (tolerance "
+                << opt.tolerance << "), " << std::lround(wall) << " s so far\n"
+                << std::flush;
+    };
     // With the LRM, each speed starts from the Pitt-Peters trim at that speed (thesis 8.5: the coupled
     // trim beside Pitt-Peters): a cold start or the previous speed's LRM trim is often too far off for
     // Newton on a flow that is only statistically steady, and the comparison is written alongside.
@@ -99,6 +109,8 @@ std::function<int()> add_trim_command(CLI::App& app) {
           opt = pp_opt;
         }
       }
+      speed = v;
+      opt.progress = lrm ? std::function<void(int, double)>(progress) : nullptr;  // (Pitt-Peters trims in well under a second)
       const TrimResult r = trim(heli, t, opt);
       std::cout << r.message << "\n";
       if (r.converged && !lrm) {

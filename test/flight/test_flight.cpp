@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "ship_lrm/flight/doublet.hpp"
 #include "ship_lrm/flight/trim.hpp"
@@ -185,4 +187,21 @@ TEST(Flight, FailedTrimSaysSoWithItsResidual) {
   EXPECT_FALSE(r.converged);
   EXPECT_NE(r.message.find("NOT converge"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("residual"), std::string::npos) << r.message;
+}
+
+TEST(Flight, TrimReportsEachNewtonIteration) {
+  Helicopter heli(load_default_bo105());
+  TrimTarget t;
+  t.speed = 30;
+  TrimOptions o;
+  std::vector<std::pair<int, double>> seen;
+  o.progress = [&](int iteration, double residual) { seen.emplace_back(iteration, residual); };
+  const TrimResult r = trim(heli, t, o);
+  ASSERT_TRUE(r.converged) << r.message;
+  // one call per iteration, numbered from the starting point (0) to the converged one
+  ASSERT_EQ(seen.size(), static_cast<size_t>(r.iterations) + 1);
+  for (size_t k = 0; k < seen.size(); ++k) EXPECT_EQ(seen[k].first, static_cast<int>(k));
+  EXPECT_DOUBLE_EQ(seen.back().second, r.residual);
+  EXPECT_LT(seen.back().second, o.tolerance);
+  EXPECT_GT(seen.front().second, o.tolerance) << "a cold start is not already trimmed";
 }

@@ -4,6 +4,7 @@
 // the inflow settle to their periodic state (the rotor is integrated in time, as in flight).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -23,6 +24,10 @@ struct TrimOptions {
   int settle_revolutions = 3;  // per evaluation, before the averaging revolution
   std::optional<PilotControls> initial_controls;
   std::optional<Vec3> initial_attitude;  // (roll, pitch, yaw), rad
+  // Called at each Newton iteration with its number (0: the starting point) and residual norm, before
+  // the convergence test: a coupled LRM trim takes minutes per iteration at N = 64, and the
+  // command-line tool shows where it is.
+  std::function<void(int iteration, double residual)> progress;
 };
 
 struct TrimResult {
