@@ -269,6 +269,7 @@ SHIP_LRM_HD void gather(const LatticeView& v, int x, int y, int z, std::size_t c
   g[0] = load_pop(pop(v, 0, c));
   const std::int64_t* inner = inner_offsets(v, x, y, z);
   float term[Q], weight[Q];
+  SHIP_LRM_UNROLL  // (the directions' components fold; cells next to moving walls were a fifth of a step over the deck)
   for (int i = 1; i < Q; ++i) {
     std::size_t nb;
     float uw[4];
@@ -299,6 +300,7 @@ SHIP_LRM_HD void scatter(const LatticeView& v, int x, int y, int z, std::size_t 
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) drho += g[i];
   const std::int64_t* inner = inner_offsets(v, x, y, z);
+  SHIP_LRM_UNROLL
   for (int i = 1; i < Q; ++i) {
     std::size_t nb;
     float uw[4];
