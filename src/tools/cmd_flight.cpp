@@ -152,7 +152,6 @@ std::function<int()> add_doublet_command(CLI::App& app) {
     std::string axis = "lateral", out, config, engine = "governed";
     double speed = 13.37, amplitude = 10, start = 1, pulse = 1, duration = 8;
     bool overwrite = false, no_plot = false;
-    LrmFaceOptions face;
   };
   auto o = std::make_shared<Opts>();
   cmd->add_option("--axis", o->axis, "control moved: lateral, longitudinal, collective or pedal")

@@ -1,6 +1,5 @@
 // `ship_lrm sweep inflow` and `sweep ground`: isolated rotor in the LRM domain over speeds (against
 // Pitt-Peters and momentum theory, thesis 8.1) or ground heights (thesis 8.2.3), CSV + PNG.
-#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -47,8 +46,6 @@ struct IsolatedRotorOptions {
                  "also write each case's time-averaged x-z plane through the hub (plane_*.csv, .png: velocity relative to the "
                  "rotor, streamlines)");
   }
-  // The faces column of the CSVs.
-  std::string faces_label() const { return face.label(); }
   lrm::LrmConfig config() const {
     lrm::LrmConfig cfg;
     cfg.nodes = nodes;
@@ -188,9 +185,9 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
         csv << std::setprecision(6) << o->mode << "," << v << "," << h << "," << r.ground_effective_height / cfg.radius << ","
             << r.induced_mean << "," << oge.induced_mean << "," << ratio << "," << cb << ",";
         if (hover) csv << lrm::hayden_ratio(h);
-        csv << "," << vi << "," << o->faces_label() << "," << cfg.nodes << "," << cfg.reach << "," << r.steps << "," << r.wall_seconds
-            << "," << r.induced_std << "," << r.induced_half_difference << "," << oge.induced_std << "," << oge.induced_half_difference
-            << "," << uncertainty << "\n";
+        csv << "," << vi << "," << o->face.label() << "," << cfg.nodes << "," << cfg.reach << "," << r.steps << "," << r.wall_seconds << ","
+            << r.induced_std << "," << r.induced_half_difference << "," << oge.induced_std << "," << oge.induced_half_difference << ","
+            << uncertainty << "\n";
         csv.flush();
         std::cout.flush();
       }
@@ -245,7 +242,7 @@ std::function<int()> add_sweep_command(CLI::App& app) {
           << r.inflow.mean.x() << "," << r.pitt_peters_mean << "," << r.pitt_peters_cosine << "," << r.momentum_theory << "," << vh << ","
           << r.induced_mean / r.pitt_peters_mean << "," << cfg.nodes << "," << cfg.reach << "," << r.cells_per_edge << ","
           << r.simulated_seconds / r.steps << "," << r.steps << "," << r.wall_seconds << "," << r.induced_std << ","
-          << r.induced_half_difference << "," << o->faces_label() << "\n";
+          << r.induced_half_difference << "," << o->face.label() << "\n";
       csv.flush();
     }
     csv.close();
