@@ -19,6 +19,8 @@ std::string LrmBenchmarkResult::to_json() const {
      << ", \"yaw_rate_deg_s\": " << yaw_rate * 180.0 / M_PI << ", \"cells_per_edge\": " << cells_per_edge << ", \"cells\": " << cells
      << ", \"flight_steps\": " << flight_steps << ", \"lbm_steps\": " << lbm_steps << ", \"simulated_s\": " << simulated_seconds
      << ", \"wall_s\": " << wall_seconds << ", \"clock_over_sim\": " << clock_over_sim << ", \"mlups\": " << mlups;
+  if (!faces.empty()) os << ", \"faces\": \"" << faces << "\"";
+  if (far_field_builds > 0) os << ", \"far_field_builds\": " << far_field_builds << ", \"far_field_s\": " << far_field_s;
   if (has_split)
     os << ", \"split_s\": {\"lbm\": " << lbm_s << ", \"motion\": " << motion_s << ", \"forces\": " << forces_s
        << ", \"inflow\": " << inflow_s << ", \"flight\": " << flight_s << "}";
@@ -87,6 +89,8 @@ LrmBenchmarkResult run_lrm_benchmark(const flight::HelicopterParameters& p, cons
   r.lbm_s = after.lbm - before.lbm;
   r.inflow_s = after.inflow - before.inflow;
   r.flight_s = r.wall_seconds - r.motion_s - r.forces_s - r.lbm_s - r.inflow_s;
+  r.far_field_builds = static_cast<long>(lrm->domain().far_field_builds());
+  r.far_field_s = lrm->domain().far_field_seconds();
   r.flight_steps = steps;
   r.lbm_steps = lrm->lbm_steps() - lbm0;
   r.simulated_seconds = steps * heli.time_step();

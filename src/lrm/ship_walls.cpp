@@ -1,6 +1,9 @@
 // The ship and the sea in the LRM domain (see ship_walls.hpp).
 #include "ship_lrm/lrm/ship_walls.hpp"
 
+#include <cmath>
+#include <limits>
+
 namespace ship_lrm::lrm {
 
 ShipWall::ShipWall(std::shared_ptr<const wake::ShipGeometry> ship, std::shared_ptr<const wake::ShipMotion> motion)
@@ -49,6 +52,7 @@ bool ShipInDomain::apply(LrmDomain& domain, double t, const DomainPose& pose) {
     due = (body[c] - corners_body_[c]).norm() > limit || (sea_ && std::abs(mean[c].z() - corners_mean_[c].z()) > limit);
   if (!due) {
     domain.update_wall_motions();
+    if (domain.config().rotor_far_field) place_far_field_ground(domain);
     return false;
   }
   if (&domain != domain_) {
@@ -61,7 +65,34 @@ bool ShipInDomain::apply(LrmDomain& domain, double t, const DomainPose& pose) {
   corners_body_ = body;
   corners_mean_ = mean;
   ++voxelisations_;
+  if (domain.config().rotor_far_field) place_far_field_ground(domain);  // after the walls: a ship over the disk is refused there
   return true;
+}
+
+void ShipInDomain::place_far_field_ground(LrmDomain& domain) {
+  // The first surface straight below the hub (the mr frame's +z), ship or sea, by sphere tracing the
+  // two signed distances (each at most the true distance to its surface, so no step passes through
+  // one). Not found within 20 R: no ground.
+  const double radius = domain.config().radius, step_min = 0.01 * domain.units().dx();
+  double z = 0, height = std::numeric_limits<double>::infinity();
+  while (z < 20.0 * radius) {
+    const Vec3 p(0, 0, z);
+    double d = ship_->signed_distance(p);
+    if (sea_) d = std::min(d, sea_->signed_distance(p));
+    if (d < step_min) {
+      height = z;
+      break;
+    }
+    z += d;
+  }
+  // a new image costs a new far field: only when the surface moved by half a cell (0.3 m at N = 32,
+  // against heights of 5 - 15 m above deck or sea)
+  const bool both_none = std::isinf(height) && std::isinf(far_field_ground_);
+  if (both_none ||
+      (!std::isinf(height) && !std::isinf(far_field_ground_) && std::abs(height - far_field_ground_) <= 0.5 * domain.units().dx()))
+    return;
+  domain.set_far_field_ground(height);
+  far_field_ground_ = height;
 }
 
 }  // namespace ship_lrm::lrm

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "ship_lrm/lbm/solver.hpp"
+#include "ship_lrm/lrm/face_setup.hpp"
 #include "ship_lrm/wake/wake_precompute.hpp"
 
 namespace ship_lrm::ros_layer {
@@ -64,6 +65,21 @@ lrm::ApproachConfig approach_config(const ros::NodeHandle& nh, bool table_here) 
   } catch (const std::exception& e) {
     throw ParamError("parameter " + where(nh, "backend") + ": " + e.what());
   }
+  // the LRM's faces, as `ship_lrm approach --faces --outlet-sigma --relaxed-faces --rotor-far-field`
+  std::string faces = "thesis";
+  read(nh, "faces", faces);
+  double sigma = 0;
+  read_number(nh, "outlet_sigma", sigma);
+  std::vector<std::string> relaxed = {"back", "top", "bottom"};
+  read(nh, "relaxed_faces", relaxed);
+  try {
+    lrm::apply_face_setup(faces, c.lrm);
+    lrm::relax_faces(relaxed, sigma, c.lrm);
+  } catch (const std::exception& e) {
+    throw ParamError("parameters " + where(nh, "faces") + ", " + where(nh, "outlet_sigma") + ", " + where(nh, "relaxed_faces") + ": " +
+                     e.what());
+  }
+  read(nh, "rotor_far_field", c.lrm.rotor_far_field);
   read_number(nh, "duration", c.duration);
   read_number(nh, "startup", c.startup);
   read_number(nh, "table_offset", c.table_offset);

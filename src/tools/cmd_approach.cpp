@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "lrm_face_options.hpp"
 #include "ship_lrm/flight/parameters.hpp"
 #include "ship_lrm/lrm/approach.hpp"
 #include "ship_lrm/lrm/deadline_watch.hpp"
@@ -43,6 +44,7 @@ std::function<int()> add_approach_command(CLI::App& app) {
     double output_interval = 0.01;
     bool overwrite = false, no_plot = false, no_ship = false, no_wake = false, no_fuselage = false;
     bool realtime = false, pipelined = false;
+    LrmFaceOptions faces;
   };
   auto o = std::make_shared<Opts>();
   o->cfg.lrm.nodes = 32;
@@ -65,6 +67,7 @@ std::function<int()> add_approach_command(CLI::App& app) {
   cmd->add_option("--table-offset", o->cfg.table_offset, "s into the table at t = 0")->capture_default_str();
   cmd->add_flag("--no-ship", o->no_ship, "lrm: no ship or sea walls in the LRM domain");
   cmd->add_flag("--no-fuselage", o->no_fuselage, "lrm: no fuselage walls in the LRM domain");
+  o->faces.add_to(*cmd);
   cmd->add_flag("--no-wake", o->no_wake, "the table's free stream instead of its wake (thesis appendix VIII)");
   cmd->add_option("--output-interval", o->output_interval, "s between CSV rows")->check(CLI::Range(1e-4, 10.0))->capture_default_str();
   cmd->add_option("--out", o->out, "output directory (approach.csv, approach.png, approach_wavelets.png, approach_summary.csv)")
@@ -84,13 +87,15 @@ std::function<int()> add_approach_command(CLI::App& app) {
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
     if (o->cfg.inflow != "lrm")  // an LRM option with Pitt-Peters would be ignored without a word
-      for (const char* name : {"--N", "--reach", "--backend", "--no-ship", "--no-fuselage"})
+      for (const char* name : {"--N", "--reach", "--backend", "--no-ship", "--no-fuselage", "--faces", "--outlet-sigma", "--relaxed-faces",
+                               "--rotor-far-field"})
         if (cmd->get_option(name)->count() > 0) throw CLI::ValidationError(name, "applies to the LRM only (--inflow lrm)");
     lrm::ApproachConfig cfg = o->cfg;
     cfg.lrm.backend = lbm::parse_backend(o->backend);
     cfg.ship_walls = !o->no_ship;
     cfg.wake = !o->no_wake;
     cfg.fuselage = !o->no_fuselage;
+    o->faces.apply(cfg.lrm);
     if (cfg.table.empty()) {
       cfg.table = wake::default_table_path();
       if (!fs::exists(cfg.table))
@@ -117,7 +122,7 @@ std::function<int()> add_approach_command(CLI::App& app) {
               << cfg.inflow;
     if (auto* d = run.lrm_domain())
       std::cout << " (N = " << d->config().nodes << ", a = " << d->config().reach << ", " << d->cells_per_edge() << "^3 cells, "
-                << d->solver().backend_name() << ", LBM step " << d->time_step() * 1e3 << " ms)";
+                << d->solver().backend_name() << ", LBM step " << d->time_step() * 1e3 << " ms, faces " << o->faces.label() << ")";
     std::cout << "\n";
     std::ofstream csv(dir / "approach.csv");
     write_header(csv);
@@ -157,6 +162,9 @@ std::function<int()> add_approach_command(CLI::App& app) {
     if (const auto n = run.fluid_counts(); n && n->wall_changes > 0)
       std::cout << "LRM walls: the wall cells changed " << n->wall_changes << " times (" << n->face_restarts
                 << " of them next to the faces, where the flow restarts at equilibrium); placing walls took " << n->wall_seconds << " s\n";
+    if (const auto* d = run.lrm_domain(); d && d->config().rotor_far_field)
+      std::cout << "rotor far field at the faces: its shape was computed " << d->far_field_builds() << " times (" << d->far_field_seconds()
+                << " s), rescaled with the thrust in between\n";
     if (const auto* rt = run.realtime_inflow()) {
       const lrm::RealTimeStats st = rt->stats();
       std::cout << "real time ("

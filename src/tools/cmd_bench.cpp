@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "ship_lrm/lbm/benchmark.hpp"
 #ifdef SHIP_LRM_HAVE_FLIGHT
+#include "lrm_face_options.hpp"
 #include "ship_lrm/flight/flight_benchmark.hpp"
 #include "ship_lrm/lrm/lrm_benchmark.hpp"
 #include "ship_lrm/lrm/realtime_inflow.hpp"
@@ -52,6 +53,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
     int nodes = 64;
     double reach = 1.25, seconds = 2, speed = 25, warm_up = 0.5, yaw_rate = 0;
     bool json = false, realtime = false, pipelined = false;
+    LrmFaceOptions faces;
   };
   auto lo = std::make_shared<LrmOpts>();
   lrm_cmd->add_option("--backend", lo->backend, "cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
@@ -66,6 +68,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
                    "frame's fictitious forces (a manoeuvre's step; 0: straight flight)")
       ->check(CLI::Range(-90.0, 90.0))
       ->capture_default_str();
+  lo->faces.add_to(*lrm_cmd);
   lrm_cmd->add_flag("--json", lo->json, "print one JSON object");
   lrm_cmd->add_flag("--realtime", lo->realtime,
                     "pace the run to the wall clock with firm deadlines (LRM in its own thread, Pitt-Peters for late steps): "
@@ -116,18 +119,23 @@ std::function<int()> add_bench_command(CLI::App& app) {
       c.nodes = lo->nodes;
       c.reach = lo->reach;
       c.backend = lbm::parse_backend(lo->backend);
+      lo->faces.apply(c);
       const auto p = flight::load_default_bo105();
       if (lo->pipelined && !lo->realtime) throw lbm::ConfigError("bench lrm: --pipelined needs --realtime");
       const auto mode = lo->pipelined ? lrm::RealTimeMode::Pipelined : lrm::RealTimeMode::LockStep;
       const double yaw_rate = lo->yaw_rate * M_PI / 180.0;
-      const auto r = lo->realtime ? lrm::run_realtime_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up, mode, yaw_rate)
-                                  : lrm::run_lrm_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up, yaw_rate);
+      auto r = lo->realtime ? lrm::run_realtime_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up, mode, yaw_rate)
+                            : lrm::run_lrm_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up, yaw_rate);
+      r.faces = lo->faces.label();
       if (lo->json) {
         std::cout << r.to_json() << std::endl;
       } else {
         std::cout << std::fixed << std::setprecision(3) << "coupled LRM step, " << r.backend << ", N = " << r.nodes << ", a = " << r.reach
-                  << " (" << r.cells_per_edge << "^3 cells" << (r.yaw_rate != 0 ? ", turning" : "")
+                  << " (" << r.cells_per_edge << "^3 cells" << (r.yaw_rate != 0 ? ", turning" : "") << ", faces " << r.faces
                   << "): t_clock / t_sim = " << r.clock_over_sim << ", " << std::setprecision(1) << r.mlups << " MLUPS\n";
+        if (r.far_field_builds > 0)
+          std::cout << std::setprecision(3) << "rotor far field: its shape computed " << r.far_field_builds << " times, " << r.far_field_s
+                    << " s\n";
         if (r.realtime)
           std::cout << std::setprecision(2) << "paced real time: " << r.deadline_misses << " of " << r.flight_steps
                     << " steps missed their deadline (" << 100.0 * r.miss_fraction << " %), Pitt-Peters served them; worst on-time wait "

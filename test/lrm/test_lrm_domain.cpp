@@ -8,6 +8,7 @@
 #include "lrm_test_config.hpp"
 #include "ship_lrm/lrm/domain.hpp"
 #include "ship_lrm/rotor/momentum_theory.hpp"
+#include "ship_lrm/rotor/vortex_cylinder.hpp"
 
 using namespace ship_lrm;
 
@@ -131,6 +132,82 @@ TEST(IsolatedRotor, WithTheRotorsFarFieldAtTheFacesTheDomainSizeDropsOut) {
   RecordProperty("lrm_over_glauert_a_1_25", std::to_string(ratio[0]));
   RecordProperty("lrm_over_glauert_a_2", std::to_string(ratio[1]));
   EXPECT_NEAR(ratio[0], ratio[1], 0.01);
+}
+
+// The far field is linear in the wake's circulation: a thrust or airspeed change that leaves the
+// wake's direction within 1 deg only rescales it (by v, momentum theory), a larger turn rebuilds it;
+// either way the faces get what a domain set up at the new state from the start gets.
+TEST(IsolatedRotor, TheRotorsFarFieldIsRescaledWhileTheWakeKeepsItsDirection) {
+  auto cfg = quick_config();
+  cfg.rotor_far_field = true;
+  const auto forces = [](double thrust) {
+    rotor::RotorForceHarmonics h;
+    h.cos[0] = rotor::Vec3(0, 0, -thrust);
+    return h;
+  };
+  const rotor::Vec3 air(-20, 0, 0);
+  const double T = 24525;
+  lrm::LrmDomain d(cfg);
+  EXPECT_TRUE(d.far_field().empty());
+  d.set_stream(air);
+  d.set_rotor_forces(forces(T));
+  ASSERT_EQ(d.far_field_builds(), 1u);
+  const std::vector<rotor::Vec3> first = d.far_field();
+  // +2.5 %: v from 6.43 to 6.58 m/s, the wake turns by 0.38 deg; rescaled by the ratio of the v's
+  d.set_rotor_forces(forces(1.025 * T));
+  EXPECT_EQ(d.far_field_builds(), 1u);
+  const double v1 = rotor::VortexCylinderWake(cfg.radius, T, cfg.density, air, 1.0).mean_induced();
+  const double v2 = rotor::VortexCylinderWake(cfg.radius, 1.025 * T, cfg.density, air, 1.0).mean_induced();
+  ASSERT_EQ(d.far_field().size(), first.size());
+  for (size_t k = 0; k < first.size(); k += 97) EXPECT_NEAR((d.far_field()[k] - v2 / v1 * first[k]).norm(), 0.0, 1e-12 * v2) << k;
+  // against a domain built at 1.025 T: the mean difference over the faces is the 0.38 deg turn's
+  lrm::LrmDomain fresh(cfg);
+  fresh.set_stream(air);
+  fresh.set_rotor_forces(forces(1.025 * T));
+  double mean_difference = 0;
+  for (size_t k = 0; k < first.size(); ++k) mean_difference += (d.far_field()[k] - fresh.far_field()[k]).norm() / first.size();
+  EXPECT_LT(mean_difference, 0.01 * v2);
+  RecordProperty("mean_difference_per_v", std::to_string(mean_difference / v2));
+  // +20 %: the wake turns by 2.9 deg, rebuilt: the same field as the fresh domain's
+  d.set_rotor_forces(forces(1.2 * T));
+  fresh.set_rotor_forces(forces(1.2 * T));
+  EXPECT_EQ(d.far_field_builds(), 2u);
+  for (size_t k = 0; k < first.size(); ++k) ASSERT_LT((d.far_field()[k] - fresh.far_field()[k]).norm(), 1e-12 * v2) << k;
+  // the thrust gone: no far field
+  d.set_rotor_forces(forces(0));
+  for (const auto& u : d.far_field()) ASSERT_EQ(u.norm(), 0.0);
+}
+
+// With a face grid (a ship's wake table) the far field is computed for the grid's air at the disk's
+// centre, the air the rotor sits in, not for the undisturbed air of set_motion: here a grid without
+// points (all its free stream, 12 m/s) against a motion air of 20 m/s.
+TEST(IsolatedRotor, WithAFaceGridTheFarFieldIsThatOfTheGridsAirAtTheHub) {
+  auto cfg = quick_config();
+  cfg.rotor_far_field = true;
+  rotor::RotorForceHarmonics h;
+  h.cos[0] = rotor::Vec3(0, 0, -24525);
+  lrm::LrmDomain d(cfg);
+  d.set_stream(rotor::Vec3(-20, 0, 0));
+  lbm::GridFeed grid;
+  grid.free_stream[0] = -12.0f;
+  const lbm::GridWindowView windows[2];
+  const std::uint64_t serials[2] = {0, 0};
+  d.set_face_grid(windows, serials, grid, rotor::Vec3::Zero(), Eigen::Matrix3d::Identity(), rotor::Vec3::Zero());
+  d.set_rotor_forces(h);
+  lrm::LrmDomain still(cfg);
+  still.set_stream(rotor::Vec3(-12, 0, 0));
+  still.set_rotor_forces(h);
+  lrm::LrmDomain undisturbed(cfg);
+  undisturbed.set_stream(rotor::Vec3(-20, 0, 0));
+  undisturbed.set_rotor_forces(h);
+  ASSERT_EQ(d.far_field().size(), still.far_field().size());
+  double to_still = 0, to_undisturbed = 0;
+  for (size_t k = 0; k < d.far_field().size(); ++k) {
+    to_still = std::max(to_still, (d.far_field()[k] - still.far_field()[k]).norm());
+    to_undisturbed = std::max(to_undisturbed, (d.far_field()[k] - undisturbed.far_field()[k]).norm());
+  }
+  EXPECT_LT(to_still, 1e-9);
+  EXPECT_GT(to_undisturbed, 0.1);
 }
 
 #include "ship_lrm/flight/trim.hpp"

@@ -145,3 +145,39 @@ TEST(ShipInDomain, UniformStreamStaysUniformWithTheHullFillingTheLowerHalf) {
 TEST(ShipInDomain, DISABLED_UniformStreamStaysUniformWithTheHullFillingTheLowerHalfWhileTheDomainTurns) {
   expect_uniform(3.5, Vector3d(-4.0, 1.0, 0.0), Vector3d(0, 0, 0.03));
 }
+
+// With the rotor's far field (LrmConfig::rotor_far_field) the ground its wake is mirrored in is the
+// first surface straight below the hub along the shaft: the deck over the landing spot, the sea
+// behind the ship, at (waterline - hub z) / cos(theta) along a shaft tilted by theta.
+TEST(ShipInDomain, TheFarFieldsGroundIsTheDeckOrTheSeaBelowTheHub) {
+  lrm::LrmConfig cfg;
+  cfg.nodes = 16;
+  cfg.backend = lbm::Backend::Cpu;
+  cfg.rotor_far_field = true;
+  lrm::LrmDomain domain(cfg);
+  std::shared_ptr<const wake::ShipGeometry> ship = wake::make_natogd(1.0);
+  lrm::ShipInDomain walls(ship, std::make_shared<wake::StaticMotion>());
+  EXPECT_TRUE(std::isinf(walls.far_field_ground()));
+  lrm::DomainPose p;
+  p.hub = Vector3d(-12.75, 0, -9.5);  // 9.5 m above the deck over the landing spot
+  walls.apply(domain, 0.0, p);
+  EXPECT_NEAR(walls.far_field_ground(), 9.5, 0.01 * domain.units().dx());
+  const double theta = 10.0 * M_PI / 180.0;
+  p.hub = Vector3d(-150.0, 0, -9.5);  // far behind the stern
+  p.rotation = Eigen::AngleAxisd(theta, Vector3d::UnitY()).toRotationMatrix();
+  walls.apply(domain, 0.0, p);
+  EXPECT_NEAR(walls.far_field_ground(), (ship->datum().waterline + 9.5) / std::cos(theta), 0.01 * domain.units().dx());
+  // the domain takes it: its far field is no longer the one without ground
+  rotor::RotorForceHarmonics h;
+  h.cos[0] = Vector3d(0, 0, -24525);
+  domain.set_stream(Vector3d(-20, 0, 0));
+  domain.set_rotor_forces(h);
+  lrm::LrmDomain free_air(cfg);
+  free_air.set_stream(Vector3d(-20, 0, 0));
+  free_air.set_rotor_forces(h);
+  ASSERT_EQ(domain.far_field().size(), free_air.far_field().size());
+  double difference = 0;
+  for (std::size_t k = 0; k < domain.far_field().size(); ++k)
+    difference = std::max(difference, (domain.far_field()[k] - free_air.far_field()[k]).norm());
+  EXPECT_GT(difference, 0.01);
+}

@@ -62,8 +62,11 @@ struct LrmConfig {
   // loaded disk with the rotor's mean thrust (rotor/vortex_cylinder.hpp) at each face cell, added to
   // the velocity faces' values and to the impedance faces' reference. A finite domain's faces
   // otherwise act on the rotor like the walls of a wind tunnel (docs/design.md, "Face interference").
-  // Recomputed when the thrust changes by more than 2 % or the air by more than 2 % of its speed (about
-  // 3 s at N = 64 on 2 cores, so not for real time); the faces are then fed on the host.
+  // Updated when the thrust changes by more than 2 % or the air by more than 2 % of its speed: rescaled
+  // with the wake's circulation while the wake keeps its direction (within 1 deg), computed anew
+  // otherwise (the rings' multipole sums: 0.1 s at N = 32, 0.4 s at N = 64 on 2 cores); the faces
+  // are then fed on the host. The air it is computed for: that of set_motion, or with a face grid (a
+  // ship's wake, set_face_grid) the grid's air at the disk's centre averaged over the last second.
   bool rotor_far_field = false;
   // Pressure-outlet faces entrain (lbm::FaceCondition::total_pressure_inflow): air leaving holds the
   // ambient pressure, air entering comes from rest in the ambient (Bernoulli).
@@ -157,6 +160,14 @@ class LrmDomain {
   std::size_t rebuilds() const { return rebuilds_; }            // changes of the wall cells after the first (moving walls)
   std::size_t face_restarts() const { return face_restarts_; }  // of those, the ones next to the faces (the flow restarted)
   double wall_seconds() const { return wall_seconds_; }         // wall-clock time in update_walls (voxelising and changing)
+  // LrmConfig::rotor_far_field: the rotor's induced velocity at each boundary cell (m/s, mr axes, the
+  // solver's boundary_cells() order; empty before the first set_rotor_forces with thrust), how often
+  // it changed (a change of thrust or airspeed by more than 2 %) and how often its shape was computed
+  // for that (a change that leaves the wake's direction within 1 deg only rescales it).
+  const std::vector<Vec3>& far_field() const { return far_field_; }
+  std::size_t far_field_updates() const { return far_field_updates_; }
+  std::size_t far_field_builds() const { return far_field_builds_; }
+  double far_field_seconds() const { return far_field_seconds_; }  // wall-clock time spent computing its shape
   // LrmConfig::rotor_far_field over flat ground parallel to the disk, `height` m below the hub (where
   // the bounce-back wall lies, half-way between the last fluid and the first wall cell): the far field
   // gets the ground's mirror image (rotor::VortexCylinderWake::set_ground), so that the faces let the
@@ -194,14 +205,24 @@ class LrmDomain {
   std::vector<Vec3> face_air_;        // host path: the grid's air per boundary cell (mr axes, m/s)
   std::vector<Vec3> face_positions_;  // position() of each boundary cell of the solver (empty: not listed yet)
   // LrmConfig::rotor_far_field: the rotor's induced velocity per boundary cell (m/s, mr axes), and the
-  // thrust and air it was computed for.
-  std::vector<Vec3> far_field_;
+  // thrust and air it was computed for. The field is linear in the wake's circulation, 2 v: it is kept
+  // per unit v (far_field_shape_) for the wake direction it was built for, and only rescaled while the
+  // direction stays within 1 deg.
+  std::vector<Vec3> far_field_, far_field_shape_;
+  Vec3 far_field_direction_ = Vec3::Zero();
+  std::size_t far_field_builds_ = 0, far_field_updates_ = 0;
+  double far_field_seconds_ = 0;
   double far_field_thrust_ = 0, rotor_thrust_ = 0;
   Vec3 far_field_air_ = Vec3::Zero();
   bool far_field_stale_ = true;
   double far_field_ground_ = std::numeric_limits<double>::infinity();  // m below the hub
-  bool update_far_field(const Vec3& air);                              // true when it changed
-  bool face_air_stale_ = true;                                         // the grid or the cell list changed since face_air_ was computed
+  // with a face grid: its air at the disk's centre (m/s relative to the hub, mr axes), low-passed over
+  // 1 s of the domain's time, for the far field
+  Vec3 hub_air_ = Vec3::Zero();
+  bool hub_air_set_ = false;
+  double hub_air_time_ = 0;
+  bool update_far_field(const Vec3& air);  // true when it changed
+  bool face_air_stale_ = true;             // the grid or the cell list changed since face_air_ was computed
   bool motion_set_ = false;
   bool faces_hold_air_ = true;  // some face is a velocity or impedance face: it can hold a stream (set once)
   std::vector<std::shared_ptr<WallSurface>> walls_;

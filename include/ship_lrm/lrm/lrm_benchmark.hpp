@@ -20,6 +20,11 @@ struct LrmBenchmarkResult {
   // simulated-time run: where the wall time went (LrmInflow::times(); flight = the rest)
   bool has_split = false;
   double motion_s = 0, forces_s = 0, lbm_s = 0, inflow_s = 0, flight_s = 0;
+  // LrmConfig::rotor_far_field: how often its shape was computed in the whole run (warm-up included), and
+  // the time that took
+  long far_field_builds = 0;
+  double far_field_s = 0;
+  std::string faces;  // the caller's name of the face set-up (written to the JSON when not empty)
   // paced wall-clock run (run_realtime_benchmark): firm deadlines, Pitt-Peters fallback
   bool realtime = false;
   bool pipelined = false;

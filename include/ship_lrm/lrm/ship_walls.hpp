@@ -5,6 +5,7 @@
 // the ship has moved by a quarter cell anywhere in the domain, with the refill of domain.hpp for the
 // cells it leaves.
 #pragma once
+#include <limits>
 #include <memory>
 
 #include "ship_lrm/lrm/domain.hpp"
@@ -58,8 +59,13 @@ class ShipInDomain {
   // Returns whether it re-voxelised. Throws lbm::ConfigError when the ship covers a rotor-disk cell.
   bool apply(LrmDomain& domain, double t, const DomainPose& pose);
   std::size_t voxelisations() const { return voxelisations_; }
+  // With LrmConfig::rotor_far_field: the height below the hub of the surface (deck or sea) that the far
+  // field's wake is mirrored in (LrmDomain::set_far_field_ground), updated by apply(); infinity: none.
+  double far_field_ground() const { return far_field_ground_; }
 
  private:
+  void place_far_field_ground(LrmDomain& domain);
+  double far_field_ground_ = std::numeric_limits<double>::infinity();
   std::shared_ptr<ShipWall> ship_;
   std::shared_ptr<GroundPlane> sea_;
   double waterline_;

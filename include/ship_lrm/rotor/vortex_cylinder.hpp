@@ -14,12 +14,20 @@
 
 namespace ship_lrm::rotor {
 
+// Complete elliptic integrals of the first and second kind, K(m) and E(m), parameter m = k^2 in [0, 1)
+// (std::invalid_argument otherwise), by the arithmetic-geometric mean (Abramowitz & Stegun 17.6).
+void complete_elliptic_integrals(double m, double& K, double& E);
+
 // Velocity induced at p (relative to the ring's centre) by a circular vortex ring of radius R in the
 // x-y plane, circulation gamma about +z (positive: flow along +z through the ring); closed form with
-// complete elliptic integrals (e.g. Yoon & Heister 2004, Int. J. Numer. Meth. Fluids 44, 665). core2: a
-// squared core radius added to the distance from the ring, which keeps the field finite on the ring
-// itself.
+// complete elliptic integrals (e.g. Yoon & Heister 2004, Int. J. Numer. Meth. Fluids 44, 665). core2: the
+// squared radius of a Scully core round the filament, which keeps the field finite on the ring itself
+// and leaves it exact at distances well above the core.
 Vec3 vortex_ring_velocity(double radius, double gamma, const Vec3& p, double core2);
+
+// The same ring's field far away (|p| > R): its dipole and octupole terms, within (15/8) (R / |p|)^4 of
+// the dipole's field (no core).
+Vec3 vortex_ring_multipole_velocity(double radius, double gamma, const Vec3& p);
 
 class VortexCylinderWake {
  public:
