@@ -437,6 +437,7 @@ void LrmDomain::clear_face_grid() {
   if (!grid_) return;
   grid_.reset();
   face_air_.clear();
+  hub_air_set_ = false;  // a later grid starts its hub air afresh
   face_air_stale_ = true;
   motion_set_ = false;
   set_motion(motion_);
