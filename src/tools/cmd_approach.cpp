@@ -86,10 +86,7 @@ std::function<int()> add_approach_command(CLI::App& app) {
                     " LBM intervals behind the flight model (more time per LBM step)");
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
-    if (o->cfg.inflow != "lrm")  // an LRM option with Pitt-Peters would be ignored without a word
-      for (const char* name : {"--N", "--reach", "--backend", "--no-ship", "--no-fuselage", "--faces", "--outlet-sigma", "--relaxed-faces",
-                               "--rotor-far-field"})
-        if (cmd->get_option(name)->count() > 0) throw CLI::ValidationError(name, "applies to the LRM only (--inflow lrm)");
+    if (o->cfg.inflow != "lrm") refuse_lrm_options(*cmd, {"--N", "--reach", "--backend", "--no-ship", "--no-fuselage"});
     lrm::ApproachConfig cfg = o->cfg;
     cfg.lrm.backend = lbm::parse_backend(o->backend);
     cfg.ship_walls = !o->no_ship;

@@ -57,10 +57,7 @@ std::function<int()> add_trim_command(CLI::App& app) {
   cmd->add_flag("--no-plot", o->no_plot, "write the CSV only");
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
-    if (o->inflow != "lrm")  // an LRM option with Pitt-Peters would be ignored without a word
-      for (const char* name :
-           {"--N", "--reach", "--backend", "--warm-up", "--faces", "--outlet-sigma", "--relaxed-faces", "--rotor-far-field"})
-        if (cmd->get_option(name)->count() > 0) throw CLI::ValidationError(name, "applies to the LRM only: add --inflow lrm");
+    if (o->inflow != "lrm") refuse_lrm_options(*cmd, {"--N", "--reach", "--backend", "--warm-up"});
     const auto speeds = parse_speeds(o->speeds);
     const HelicopterParameters p = load_config(o->config);
     const fs::path dir(o->out);

@@ -26,6 +26,14 @@ void LrmFaceOptions::add_to(CLI::App& cmd) {
                "which takes out most of the faces' interference");
 }
 
+void refuse_lrm_options(const CLI::App& cmd, std::initializer_list<const char*> others) {
+  const auto refuse = [&](const char* name) {
+    if (cmd.get_option(name)->count() > 0) throw CLI::ValidationError(name, "applies to the LRM only: add --inflow lrm");
+  };
+  for (const char* name : others) refuse(name);
+  for (const char* name : {"--faces", "--outlet-sigma", "--relaxed-faces", "--rotor-far-field"}) refuse(name);
+}
+
 std::string LrmFaceOptions::label() const {
   std::ostringstream s;
   s << faces;

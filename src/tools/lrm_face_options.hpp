@@ -25,4 +25,8 @@ struct LrmFaceOptions {
   void apply(lrm::LrmConfig& cfg) const;
 };
 
+// A command whose inflow model is not the LRM: an LRM-only option given to it (one of `others` or the
+// face options) would be ignored without a word, so it is refused (CLI::ValidationError naming it).
+void refuse_lrm_options(const CLI::App& cmd, std::initializer_list<const char*> others);
+
 }  // namespace ship_lrm::tools
