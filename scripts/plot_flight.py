@@ -16,7 +16,8 @@ momentum-theory velocity (thesis figs. 8.1, 8.2).
 sweep_ground: hover, v_mean / v_mean(OGE) over z/R beside Cheeseman-Bennett and Hayden (fig. 8.9);
 forward, v_mean over speed per height beside Glauert times the forward-flight Cheeseman-Bennett
 factor (fig. 8.11), and the ratio v_mean / v_mean(OGE) over speed beside Cheeseman-Bennett.
-plane: a sweep case's time-averaged x-z plane through the hub (`--planes`).
+plane: a sweep case's time-averaged x-z plane through the hub (`--planes`), or the approach's
+(`--plane-mean-from`) beside the wake table's air at the same points and their difference.
 """
 import argparse
 import csv
@@ -177,8 +178,10 @@ def plot_sweep_ground(data, out):
 
 
 def plot_plane(path, out):
-    """Time-averaged x-z plane through the hub (sweep --planes): downwash colour, in-plane streamlines
-    relative to the rotor, walls grey; z points down (FRD), the rotor disk is the black bar."""
+    """Time-averaged x-z plane through the hub (sweep --planes, approach --plane-mean-from): downwash
+    colour, in-plane streamlines relative to the rotor, walls grey; z points down (FRD), the rotor disk
+    is the black bar. With the undisturbed air's columns (the approach: the wake table's air at the
+    same points) also that field and the LRM's minus it, like thesis fig. 9.3 (c)."""
     import numpy as np
 
     from plot_wake import imshow  # the centre-plane field with its walls masked, as for the ship wake
@@ -186,23 +189,31 @@ def plot_plane(path, out):
     d = np.genfromtxt(path, delimiter=",", names=True)
     xs, zs = np.unique(d["x_m"]), np.unique(d["z_m"])
     ix, iz = np.searchsorted(xs, d["x_m"]), np.searchsorted(zs, d["z_m"])
-    grid = {k: np.full((zs.size, xs.size), np.nan) for k in ("u_x_m_s", "u_z_m_s", "wall")}
+    names = [k for k in d.dtype.names if k.endswith("_m_s") or k == "wall"]
+    grid = {k: np.full((zs.size, xs.size), np.nan) for k in names}
     for k in grid:
         grid[k][iz, ix] = d[k]
     wall = grid["wall"] > 0.5
-    ux, uz = np.where(wall, 0.0, grid["u_x_m_s"]), np.where(wall, 0.0, grid["u_z_m_s"])
-    fig, ax = plt.subplots(figsize=(8, 6.5))
-    lim = np.nanmax(np.abs(uz)) or 1.0
-    im = imshow(ax, {"solid": wall.astype(float), "xs": xs, "zs": zs}, uz,
-                f"{os.path.basename(path)}: mean flow relative to the rotor", "RdBu_r", -lim, lim)
-    fig.colorbar(im, ax=ax, label="u_z [m/s] (positive down)")
-    # the CSV's 6 digits make the spacing uneven in the last place; streamplot wants it exact
-    ax.streamplot(np.linspace(xs[0], xs[-1], xs.size), np.linspace(zs[0], zs[-1], zs.size), ux, uz,
-                  color="k", linewidth=0.6, density=1.6, arrowsize=0.7)
+    walls = {"solid": wall.astype(float), "xs": xs, "zs": zs}
+    panels = [("u", f"{os.path.basename(path)}: LRM mean flow relative to the rotor")]
+    if "undisturbed_u_x_m_s" in grid:
+        panels += [("undisturbed_u", "the air the faces take (wake table), same points"),
+                   ("difference", "LRM minus the faces' air")]
+        for c in ("x", "z"):
+            grid[f"difference_{c}_m_s"] = grid[f"u_{c}_m_s"] - grid[f"undisturbed_u_{c}_m_s"]
+    fig, axes = plt.subplots(len(panels), 1, figsize=(8, 6.5 * len(panels)), squeeze=False)
     r = d["rotor_radius_m"][0]
-    ax.plot([-r, r], [0, 0], color="k", lw=4)
-    ax.set_xlim(xs[0], xs[-1])
-    ax.set_ylim(zs[-1], zs[0])  # z down
+    for ax, (key, title) in zip(axes[:, 0], panels):
+        ux, uz = np.where(wall, 0.0, grid[f"{key}_x_m_s"]), np.where(wall, 0.0, grid[f"{key}_z_m_s"])
+        lim = np.nanmax(np.abs(uz)) or 1.0
+        im = imshow(ax, walls, uz, title, "RdBu_r", -lim, lim)
+        fig.colorbar(im, ax=ax, label="u_z [m/s] (positive down)")
+        # the CSV's 6 digits make the spacing uneven in the last place; streamplot wants it exact
+        ax.streamplot(np.linspace(xs[0], xs[-1], xs.size), np.linspace(zs[0], zs[-1], zs.size), ux, uz,
+                      color="k", linewidth=0.6, density=1.6, arrowsize=0.7)
+        ax.plot([-r, r], [0, 0], color="k", lw=4)
+        ax.set_xlim(xs[0], xs[-1])
+        ax.set_ylim(zs[-1], zs[0])  # z down
     fig.tight_layout()
     fig.savefig(out, dpi=110)
 

@@ -9,8 +9,8 @@ namespace ship_lrm::lrm {
 
 ApproachFluid::ApproachFluid(const ApproachConfig& cfg, const flight::HelicopterParameters& params, std::shared_ptr<wake::WakeTable> table)
     : table_(table ? std::move(table) : open_approach_table(cfg)),
-      lrm_(approach_lrm_config(cfg, params, table_->info()), 0.0)  // the start-up is part of the run (thesis 9.1)
-{
+      lrm_(approach_lrm_config(cfg, params, table_->info()), 0.0),  // the start-up is part of the run (thesis 9.1)
+      rotor_forces_on_fluid_(cfg.rotor_forces_on_fluid) {
   if (cfg.fuselage) lrm_.domain().add_wall(std::make_shared<Fuselage>());
   if (cfg.ship_walls) {
     const ApproachShip ship = approach_ship(cfg, table_->info());
@@ -47,14 +47,23 @@ rotor::RotorDiskState between(const rotor::RotorDiskState& a, const rotor::Rotor
 }
 }  // namespace
 
+rotor::RotorDiskState ApproachFluid::loads(const rotor::RotorDiskState& s) const {
+  if (rotor_forces_on_fluid_) return s;
+  rotor::RotorDiskState off = s;
+  off.aero_force = Vec3::Zero();
+  off.aero_moment = Vec3::Zero();
+  off.harmonics = rotor::RotorForceHarmonics();
+  return off;
+}
+
 rotor::RotorInflow ApproachFluid::serve(const InflowRequest& request) {
   const long steps = request.kind == InflowRequest::Kind::Advance ? lrm_.steps_due(request.dt) : 0;
   if (steps <= 1 || !placed_) {
     place(request.table_time, request.pose);
     if (request.kind == InflowRequest::Kind::Reset)
-      lrm_.reset(request.state);
+      lrm_.reset(loads(request.state));
     else
-      lrm_.advance(request.state, request.dt);
+      lrm_.advance(loads(request.state), request.dt);
   } else {
     const double t0 = placed_time_;
     const DomainPose pose0 = placed_pose_;
@@ -71,7 +80,7 @@ rotor::RotorInflow ApproachFluid::serve(const InflowRequest& request) {
       const double f = static_cast<double>(k) / static_cast<double>(steps);
       place(t0 + f * (request.table_time - t0), between(pose0, request.pose, f));
       const double dt = f * request.dt - done;  // the last one ends exactly at request.dt (f = 1)
-      lrm_.advance(between(state0, request.state, f), dt);
+      lrm_.advance(loads(between(state0, request.state, f)), dt);
       done += dt;
     }
   }

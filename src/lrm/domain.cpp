@@ -283,6 +283,12 @@ void LrmDomain::rebuild(bool carry_flow, bool near_faces) {
     solver_->initialize({}, {});
 }
 
+Vec3 LrmDomain::undisturbed_air(const Vec3& r) const {
+  Vec3 air = motion_.air_velocity;
+  if (grid_) lbm::grid_air(grid_->feed, grid_->window[0], grid_->window[1], r.data(), air.data());
+  return air - motion_.omega.cross(r);
+}
+
 Vec3 LrmDomain::position(int i, int j, int k) const { return Vec3(i - centre_, j - centre_, k - centre_) * units_.dx(); }
 
 Vec3 LrmDomain::position(std::size_t cell) const {

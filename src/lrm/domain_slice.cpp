@@ -1,6 +1,7 @@
 // A plane of the LRM domain through the hub (see domain_slice.hpp).
 #include "ship_lrm/lrm/domain_slice.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -38,6 +39,47 @@ DomainSlice domain_slice(LrmDomain& domain, int normal) {
     if (!s.wall[i]) s.max_mach = std::max(s.max_mach, std::isfinite(lu.norm()) ? lu.norm() / cs : INFINITY);
   }
   return s;
+}
+
+void add_undisturbed_air(const LrmDomain& domain, DomainSlice& s) {
+  s.undisturbed.resize(s.position.size());
+  for (std::size_t i = 0; i < s.position.size(); ++i) s.undisturbed[i] = domain.undisturbed_air(s.position[i]);
+}
+
+void SliceAverage::add(const DomainSlice& s) {
+  if (samples_ == 0) {
+    sum_.position = s.position;
+    sum_.velocity.assign(s.position.size(), Vec3::Zero());
+    sum_.wall.assign(s.position.size(), 0);
+    if (!s.undisturbed.empty()) sum_.undisturbed.assign(s.position.size(), Vec3::Zero());
+    fluid_.assign(s.position.size(), 0);
+    walls_.assign(s.position.size(), 0);
+  } else if (s.position.size() != sum_.position.size() || s.undisturbed.size() != sum_.undisturbed.size() ||
+             (!s.position.empty() && (s.position.front() != sum_.position.front() || s.position.back() != sum_.position.back()))) {
+    throw std::invalid_argument("SliceAverage: a slice of another plane");
+  }
+  for (std::size_t i = 0; i < s.position.size(); ++i) {
+    if (s.wall[i]) {
+      ++walls_[i];
+      continue;
+    }
+    ++fluid_[i];
+    sum_.velocity[i] += s.velocity[i];
+    if (!s.undisturbed.empty()) sum_.undisturbed[i] += s.undisturbed[i];
+  }
+  sum_.max_mach = std::max(sum_.max_mach, s.max_mach);
+  ++samples_;
+}
+
+DomainSlice SliceAverage::mean() const {
+  DomainSlice m = sum_;
+  for (std::size_t i = 0; i < m.position.size(); ++i) {
+    const double n = static_cast<double>(std::max(fluid_[i], 1L));
+    m.velocity[i] /= n;
+    if (!m.undisturbed.empty()) m.undisturbed[i] /= n;
+    m.wall[i] = 2 * walls_[i] > samples_ ? 1 : 0;
+  }
+  return m;
 }
 
 }  // namespace ship_lrm::lrm

@@ -46,6 +46,7 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
   const long samples = std::max(1L, static_cast<long>(std::ceil(c.average / (every * d.time_step()))));
   d.step(std::max(1L, settle));
   std::vector<double> induced(static_cast<size_t>(samples));
+  SliceAverage plane;
   for (long k = 0; k < samples; ++k) {
     d.step(every);
     const rotor::RotorInflow in = d.inflow();
@@ -53,16 +54,9 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
     r.inflow.sine += in.sine / samples;
     r.inflow.cosine += in.cosine / samples;
     induced[static_cast<size_t>(k)] = in.mean.z();
-    if (c.centre_plane) {
-      const DomainSlice s = domain_slice(d, 1);
-      if (k == 0) {  // positions and walls of the plane; velocities summed below
-        r.centre_plane = s;
-        std::fill(r.centre_plane.velocity.begin(), r.centre_plane.velocity.end(), Vec3::Zero());
-      }
-      for (size_t i = 0; i < s.velocity.size(); ++i) r.centre_plane.velocity[i] += s.velocity[i] / static_cast<double>(samples);
-      r.centre_plane.max_mach = std::max(r.centre_plane.max_mach, s.max_mach);
-    }
+    if (c.centre_plane) plane.add(domain_slice(d, 1));
   }
+  if (c.centre_plane) r.centre_plane = plane.mean();
   double square = 0, first = 0, second = 0;
   const long half = samples / 2;
   for (long k = 0; k < samples; ++k) {

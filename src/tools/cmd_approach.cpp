@@ -14,6 +14,7 @@
 #include "ship_lrm/flight/parameters.hpp"
 #include "ship_lrm/lrm/approach.hpp"
 #include "ship_lrm/lrm/deadline_watch.hpp"
+#include "ship_lrm/lrm/domain_slice.hpp"
 #include "ship_lrm/lrm/realtime_inflow.hpp"
 #include "ship_lrm/lrm/wall_clock_pacer.hpp"
 #include "ship_lrm/wake/wake_precompute.hpp"
@@ -22,6 +23,8 @@ namespace ship_lrm::tools {
 namespace fs = std::filesystem;
 
 namespace {
+constexpr double kPlaneSampleInterval = 0.02;  // s between samples of --plane-mean-from
+
 void write_header(std::ostream& o) {
   o << "time_s,x_m,y_m,z_m,distance_to_spot_m,height_above_deck_m,speed_m_s,thrust_N,CT,CMx,CMy,main_power_kW,inflow_x_m_s,"
        "inflow_y_m_s,inflow_z_m_s,ship_heave_m,ship_pitch_deg,lrm_wall_cells,lrm_voxelisations,face_refreshes\n";
@@ -43,7 +46,8 @@ std::function<int()> add_approach_command(CLI::App& app) {
     std::string out, config, backend = "auto";
     double output_interval = 0.01;
     bool overwrite = false, no_plot = false, no_ship = false, no_wake = false, no_fuselage = false;
-    bool realtime = false, pipelined = false;
+    bool realtime = false, pipelined = false, no_rotor_forces = false;
+    std::optional<double> plane_from;
     LrmFaceOptions faces;
   };
   auto o = std::make_shared<Opts>();
@@ -69,6 +73,13 @@ std::function<int()> add_approach_command(CLI::App& app) {
   cmd->add_flag("--no-fuselage", o->no_fuselage, "lrm: no fuselage walls in the LRM domain");
   o->faces.add_to(*cmd);
   cmd->add_flag("--no-wake", o->no_wake, "the table's free stream instead of its wake (thesis appendix VIII)");
+  cmd->add_option("--plane-mean-from", o->plane_from,
+                  "lrm: from this time (s) to the end, average the x-z plane through the hub in the domain's frame (meant for a "
+                  "hover) beside the table's air at the same points: centre_plane_mean.csv and .png (thesis fig. 9.3 (c))")
+      ->check(CLI::Range(0.0, 1e6));
+  cmd->add_flag("--no-rotor-forces", o->no_rotor_forces,
+                "lrm: the rotor's forces stay off the fluid, so that the domain recomputes the ship's wake alone (to compare "
+                "with the table; a diagnostic: the rotor has no induced flow of its own)");
   cmd->add_option("--output-interval", o->output_interval, "s between CSV rows")->check(CLI::Range(1e-4, 10.0))->capture_default_str();
   cmd->add_option("--out", o->out, "output directory (approach.csv, approach.png, approach_wavelets.png, approach_summary.csv)")
       ->required();
@@ -86,12 +97,17 @@ std::function<int()> add_approach_command(CLI::App& app) {
                     " LBM intervals behind the flight model (more time per LBM step)");
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
-    if (o->cfg.inflow != "lrm") refuse_lrm_options(*cmd, {"--N", "--reach", "--backend", "--no-ship", "--no-fuselage"});
+    if (o->cfg.inflow != "lrm")
+      refuse_lrm_options(*cmd, {"--N", "--reach", "--backend", "--no-ship", "--no-fuselage", "--plane-mean-from", "--no-rotor-forces"});
+    if (o->plane_from && *o->plane_from >= o->cfg.duration)
+      throw lbm::ConfigError("--plane-mean-from " + std::to_string(*o->plane_from) + " s lies beyond the run's end (--duration " +
+                             std::to_string(o->cfg.duration) + " s): nothing to average");
     lrm::ApproachConfig cfg = o->cfg;
     cfg.lrm.backend = lbm::parse_backend(o->backend);
     cfg.ship_walls = !o->no_ship;
     cfg.wake = !o->no_wake;
     cfg.fuselage = !o->no_fuselage;
+    cfg.rotor_forces_on_fluid = !o->no_rotor_forces;
     o->faces.apply(cfg.lrm);
     if (cfg.table.empty()) {
       cfg.table = wake::default_table_path();
@@ -105,9 +121,13 @@ std::function<int()> add_approach_command(CLI::App& app) {
                              cfg.table + "`");
     }
     if (o->pipelined && !o->realtime) throw lbm::ConfigError("--pipelined needs --realtime");
+    if (o->plane_from && o->realtime)
+      throw lbm::ConfigError("--plane-mean-from needs a run in simulated time (with --realtime the LRM's own thread owns the domain)");
     if (o->realtime && cfg.inflow != "lrm") throw lbm::ConfigError("--realtime needs --inflow lrm (Pitt-Peters has no deadlines to meet)");
     const fs::path dir(o->out);
-    prepare_output(dir, {"approach.csv", "approach.png", "approach_wavelets.png", "approach_summary.csv"}, o->overwrite);
+    std::vector<std::string> outputs = {"approach.csv", "approach.png", "approach_wavelets.png", "approach_summary.csv"};
+    if (o->plane_from) add_plane_outputs(outputs, "centre_plane_mean");
+    prepare_output(dir, outputs, o->overwrite);
     const flight::HelicopterParameters p = o->config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(o->config);
     std::cout << "approach: trimming the Bo 105 (Pitt-Peters) for the fixed controls ...\n" << std::flush;
     std::optional<lrm::RealTimeMode> realtime;
@@ -126,6 +146,8 @@ std::function<int()> add_approach_command(CLI::App& app) {
     write_row(csv, run.sample());
     double next_row = o->output_interval, next_report = 2.0;
     lrm::WallClockPacer pacer(run.time());
+    lrm::SliceAverage plane;
+    double next_plane = o->plane_from.value_or(0.0);
     lrm::DeadlineWatch deadline_watch;
     while (!run.done()) {
       if (o->realtime) run.set_deadline(pacer.due(run.time() + run.time_step()));
@@ -138,6 +160,12 @@ std::function<int()> add_approach_command(CLI::App& app) {
       const lrm::ApproachSample& s = run.sample();
       if (!std::isfinite(s.thrust))
         throw std::runtime_error("approach: the rotor loads are not finite at t = " + std::to_string(s.time) + " s");
+      if (o->plane_from && s.time >= next_plane - 0.5 * run.time_step()) {
+        lrm::DomainSlice slice = lrm::domain_slice(*run.lrm_domain(), 1);
+        lrm::add_undisturbed_air(*run.lrm_domain(), slice);
+        plane.add(slice);
+        next_plane += kPlaneSampleInterval;
+      }
       if (s.time >= next_row - 0.5 * run.time_step()) {
         write_row(csv, s);
         next_row += o->output_interval;
@@ -159,6 +187,11 @@ std::function<int()> add_approach_command(CLI::App& app) {
     if (const auto n = run.fluid_counts(); n && n->wall_changes > 0)
       std::cout << "LRM walls: the wall cells changed " << n->wall_changes << " times (" << n->face_restarts
                 << " of them next to the faces, where the flow restarts at equilibrium); placing walls took " << n->wall_seconds << " s\n";
+    if (plane.samples() > 0) {
+      write_plane(dir, "centre_plane_mean", plane.mean(), run.helicopter().parameters().main_rotor.radius, !o->no_plot);
+      std::cout << "wrote " << (dir / "centre_plane_mean.csv").string() << " (" << plane.samples() << " samples from "
+                << *o->plane_from << " s)\n";
+    }
     if (const auto* d = run.lrm_domain(); d && d->config().rotor_far_field)
       std::cout << "rotor far field at the faces: its shape was computed " << d->far_field_builds() << " times (" << d->far_field_seconds()
                 << " s), rescaled with the thrust in between\n";

@@ -75,24 +75,6 @@ std::string tag(double v) {
 
 // The averaged centre plane of one case: CSV (x, z in m from the hub, FRD; velocity relative to the
 // rotor in m/s; wall 0/1) and, unless --no-plot, a PNG.
-void write_plane(const fs::path& dir, const std::string& stem, const lrm::DomainSlice& s, double radius, bool png) {
-  const fs::path csv = dir / (stem + ".csv");
-  std::ofstream f(csv);
-  f << "x_m,z_m,u_x_m_s,u_y_m_s,u_z_m_s,wall,rotor_radius_m\n" << std::setprecision(6);
-  for (size_t i = 0; i < s.position.size(); ++i)
-    f << s.position[i].x() << "," << s.position[i].z() << "," << s.velocity[i].x() << "," << s.velocity[i].y() << "," << s.velocity[i].z()
-      << "," << static_cast<int>(s.wall[i]) << "," << radius << "\n";
-  f.close();
-  if (!f) throw std::runtime_error("could not write " + csv.string());
-  if (png) plot("plane", csv, dir / (stem + ".png"), "");
-}
-
-// The two files write_plane makes for a stem (so that prepare_output checks them before any run).
-void add_plane_outputs(std::vector<std::string>& names, const std::string& stem) {
-  names.push_back(stem + ".csv");
-  names.push_back(stem + ".png");
-}
-
 std::function<int()> add_ground_sweep(CLI::App& sweep) {
   auto* ground = sweep.add_subcommand(
       "ground",

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "ship_lrm/lrm/domain_slice.hpp"
+
 namespace ship_lrm::tools {
 
 // Each returns the action of its sub-command: it returns -1 when that sub-command was not chosen,
@@ -36,6 +38,13 @@ void plot(const std::string& kind, const std::filesystem::path& csv, const std::
 // PyWavelets; a pyenv python3 earlier on PATH may lack them), `args` appended as given (the caller
 // quotes them). True when it succeeded.
 bool run_script(const std::string& script, const std::string& args);
+// A time-averaged plane of the LRM domain (lrm::SliceAverage) to dir/stem.csv: x_m, z_m, u_x_m_s,
+// u_y_m_s, u_z_m_s (relative to the grid, mr axes), wall, rotor_radius_m, and where the slice has
+// them the undisturbed air's undisturbed_u_x_m_s, ... (the table's, thesis fig. 9.3 (c)); with png, its
+// plot (plot_flight.py plane) to dir/stem.png.
+void write_plane(const std::filesystem::path& dir, const std::string& stem, const lrm::DomainSlice& s, double radius, bool png);
+// The two files write_plane makes for a stem (so that prepare_output checks them before any run).
+void add_plane_outputs(std::vector<std::string>& names, const std::string& stem);
 #endif
 
 }  // namespace ship_lrm::tools

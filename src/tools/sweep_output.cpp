@@ -1,5 +1,7 @@
 // Shared helpers of the sweep commands: speed lists (number_list.cpp), output directories, plotting.
 #include <cstdlib>
+#include <fstream>
+#include <iomanip>
 #include <iostream>
 
 #include "commands.hpp"
@@ -31,6 +33,29 @@ void plot(const std::string& kind, const fs::path& csv, const fs::path& png, con
     std::cerr << "ship_lrm: warning: plotting failed (needs python3 with matplotlib); the CSV " << csv << " is complete\n";
   else
     std::cout << "wrote " << png.string() << "\n";
+}
+
+void write_plane(const fs::path& dir, const std::string& stem, const lrm::DomainSlice& s, double radius, bool png) {
+  const fs::path csv = dir / (stem + ".csv");
+  std::ofstream f(csv);
+  const bool undisturbed = !s.undisturbed.empty();
+  f << "x_m,z_m,u_x_m_s,u_y_m_s,u_z_m_s,wall,rotor_radius_m";
+  if (undisturbed) f << ",undisturbed_u_x_m_s,undisturbed_u_y_m_s,undisturbed_u_z_m_s";
+  f << "\n" << std::setprecision(6);
+  for (size_t i = 0; i < s.position.size(); ++i) {
+    f << s.position[i].x() << "," << s.position[i].z() << "," << s.velocity[i].x() << "," << s.velocity[i].y() << "," << s.velocity[i].z()
+      << "," << static_cast<int>(s.wall[i]) << "," << radius;
+    if (undisturbed) f << "," << s.undisturbed[i].x() << "," << s.undisturbed[i].y() << "," << s.undisturbed[i].z();
+    f << "\n";
+  }
+  f.close();
+  if (!f) throw std::runtime_error("could not write " + csv.string());
+  if (png) plot("plane", csv, dir / (stem + ".png"), "");
+}
+
+void add_plane_outputs(std::vector<std::string>& names, const std::string& stem) {
+  names.push_back(stem + ".csv");
+  names.push_back(stem + ".png");
 }
 
 }  // namespace ship_lrm::tools

@@ -43,6 +43,10 @@ struct ApproachConfig {
   bool ship_walls = true;       // ship and sea as walls of the LRM domain
   bool fuselage = true;         // the Bo 105-like fuselage (walls.hpp) in the LRM domain (thesis fig. 9.2)
   bool wake = true;             // the table's wake at the faces; false: its free stream only (thesis appendix VIII)
+  // false: the rotor's forces are not put on the LRM's fluid, so the domain recomputes the ship's wake
+  // alone from the table at its faces (to compare with the table inside the domain). A diagnostic: the
+  // rotor then flies without its own induced flow.
+  bool rotor_forces_on_fluid = true;
   double lattice_margin = 1.3;  // lattice reference speed >= margin * (|free stream| + path speed), for the gusts
   // false: the airframe is held on the path (thesis 9.1's whirl tower with a fuselage). true: it is
   // held there only during the start-up (the blades and the LRM's wake settle, and the controls are

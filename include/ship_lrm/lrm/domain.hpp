@@ -129,6 +129,11 @@ class LrmDomain {
                      const Mat3& rotation, const Vec3& hub_velocity);
   void clear_face_grid();
   bool has_face_grid() const { return grid_.has_value(); }
+  // The undisturbed air at r (m from the hub, mr axes) relative to the grid, as the velocity faces take
+  // it without the rotor's far field: the face grid's field (a ship's wake), else the motion's uniform
+  // air, minus omega x r either way (m/s, mr axes). For comparing the flow inside with what feeds the
+  // faces (the approach's centre plane beside the table's, thesis fig. 9.3 (c)).
+  Vec3 undisturbed_air(const Vec3& r) const;
   // Position of a cell centre relative to the hub (m, mr axes).
   Vec3 position(int i, int j, int k) const;
   Vec3 position(std::size_t cell) const;  // the same for a lattice index (x fastest)
