@@ -456,7 +456,7 @@ void LrmDomain::restart_flow() {
   for (int l = 0; l < edge_; ++l)
     for (int j = 0; j < edge_; ++j)
       for (int i = 0; i < edge_; ++i) {
-        const Vec3 v = (motion_.air_velocity - motion_.omega.cross(position(i, j, l))) * to_lattice;
+        const Vec3 v = undisturbed_air(position(i, j, l)) * to_lattice;
         const size_t k = solver_->lattice().index(i, j, l);
         for (int d = 0; d < 3; ++d) u[3 * k + d] = static_cast<float>(v[d]);
       }

@@ -189,8 +189,8 @@ std::function<int()> add_approach_command(CLI::App& app) {
                 << " of them next to the faces, where the flow restarts at equilibrium); placing walls took " << n->wall_seconds << " s\n";
     if (plane.samples() > 0) {
       write_plane(dir, "centre_plane_mean", plane.mean(), run.helicopter().parameters().main_rotor.radius, !o->no_plot);
-      std::cout << "wrote " << (dir / "centre_plane_mean.csv").string() << " (" << plane.samples() << " samples from "
-                << *o->plane_from << " s)\n";
+      std::cout << "wrote " << (dir / "centre_plane_mean.csv").string() << " (" << plane.samples() << " samples from " << *o->plane_from
+                << " s)\n";
     }
     if (const auto* d = run.lrm_domain(); d && d->config().rotor_far_field)
       std::cout << "rotor far field at the faces: its shape was computed " << d->far_field_builds() << " times (" << d->far_field_seconds()

@@ -36,13 +36,13 @@ struct ApproachConfig {
   std::string inflow = "lrm";  // lrm | pitt_peters (the table's air at the hub as the wind)
   LrmConfig lrm;               // N, reach, backend; radius and density are the helicopter's
   ApproachPath path;
-  double duration = 30.0;       // s (thesis 9.1)
-  double startup = 5.0;         // s: the start-up period; the Delta of thesis 9.2 is taken against this time
-  double trim_speed = 0;        // m/s airspeed of the fixed controls' trim; 0: |free stream| + path speed (thesis: 25.58)
-  double table_offset = 0;      // s: approach t = 0 is the table's first frame plus this
-  bool ship_walls = true;       // ship and sea as walls of the LRM domain
-  bool fuselage = true;         // the Bo 105-like fuselage (walls.hpp) in the LRM domain (thesis fig. 9.2)
-  bool wake = true;             // the table's wake at the faces; false: its free stream only (thesis appendix VIII)
+  double duration = 30.0;   // s (thesis 9.1)
+  double startup = 5.0;     // s: the start-up period; the Delta of thesis 9.2 is taken against this time
+  double trim_speed = 0;    // m/s airspeed of the fixed controls' trim; 0: |free stream| + path speed (thesis: 25.58)
+  double table_offset = 0;  // s: approach t = 0 is the table's first frame plus this
+  bool ship_walls = true;   // ship and sea as walls of the LRM domain
+  bool fuselage = true;     // the Bo 105-like fuselage (walls.hpp) in the LRM domain (thesis fig. 9.2)
+  bool wake = true;         // the table's wake at the faces; false: its free stream only (thesis appendix VIII)
   // false: the rotor's forces are not put on the LRM's fluid, so the domain recomputes the ship's wake
   // alone from the table at its faces (to compare with the table inside the domain). A diagnostic: the
   // rotor then flies without its own induced flow.

@@ -52,7 +52,7 @@ class ApproachFluid {
   LrmInflow lrm_;
   std::unique_ptr<ShipInDomain> walls_;
   std::unique_ptr<WakeFaceFeed> feed_;
-  bool rotor_forces_on_fluid_ = true;  // ApproachConfig::rotor_forces_on_fluid
+  bool rotor_forces_on_fluid_ = true;                                 // ApproachConfig::rotor_forces_on_fluid
   rotor::RotorDiskState loads(const rotor::RotorDiskState& s) const;  // s, without its loads where they stay off the fluid
   bool placed_ = false;
   double placed_time_ = 0;

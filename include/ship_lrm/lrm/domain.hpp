@@ -137,7 +137,9 @@ class LrmDomain {
   // Position of a cell centre relative to the hub (m, mr axes).
   Vec3 position(int i, int j, int k) const;
   Vec3 position(std::size_t cell) const;  // the same for a lattice index (x fastest)
-  // Restart the flow: every cell at rest density with the current motion's air velocity (no wake).
+  // Restart the flow: every cell at rest density with the undisturbed air at its place (the face
+  // grid's, a ship's wake, else the current motion's uniform air), so that the outlets start in step
+  // with the air they are given as reference.
   // An impulsive start from rest instead sends a compression wave through the domain that the
   // non-reflecting outlets let out without restoring the density (no reference pressure).
   void restart_flow();
