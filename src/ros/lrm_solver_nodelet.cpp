@@ -211,20 +211,27 @@ class LrmSolverNodelet : public nodelet::Nodelet {
       box_.publish(m);
     }
     next_slice_ = r.state.time + slice_interval_;
-    const lrm::DomainSlice s = lrm::domain_slice(fluid_->domain(), slice_normal_);
+    lrm::DomainSlice s = lrm::domain_slice(fluid_->domain(), slice_normal_);
     max_mach_ = s.max_mach;
     if (slice_.getNumSubscribers() == 0) return;
+    lrm::add_undisturbed_air(fluid_->domain(), s);  // the air the faces take there (the wake table's)
     sensor_msgs::PointCloud2 cloud;
     cloud.header.stamp = now;
     cloud.header.frame_id = "lrm_domain";
     sensor_msgs::PointCloud2Modifier mod(cloud);
-    mod.setPointCloud2Fields(8, "x", 1, sensor_msgs::PointField::FLOAT32, "y", 1, sensor_msgs::PointField::FLOAT32, "z", 1,
+    // speed, u, v, w: the LRM's air relative to the domain; table_u, table_v, table_w: the undisturbed
+    // air the faces take at the same point (the wake table's, or the free stream); difference: |LRM -
+    // table| (thesis fig. 9.3 (c)), m/s, lrm_domain axes
+    mod.setPointCloud2Fields(12, "x", 1, sensor_msgs::PointField::FLOAT32, "y", 1, sensor_msgs::PointField::FLOAT32, "z", 1,
                              sensor_msgs::PointField::FLOAT32, "speed", 1, sensor_msgs::PointField::FLOAT32, "u", 1,
                              sensor_msgs::PointField::FLOAT32, "v", 1, sensor_msgs::PointField::FLOAT32, "w", 1,
-                             sensor_msgs::PointField::FLOAT32, "wall", 1, sensor_msgs::PointField::FLOAT32);
+                             sensor_msgs::PointField::FLOAT32, "wall", 1, sensor_msgs::PointField::FLOAT32, "table_u", 1,
+                             sensor_msgs::PointField::FLOAT32, "table_v", 1, sensor_msgs::PointField::FLOAT32, "table_w", 1,
+                             sensor_msgs::PointField::FLOAT32, "difference", 1, sensor_msgs::PointField::FLOAT32);
     mod.resize(s.position.size());
-    sensor_msgs::PointCloud2Iterator<float> x(cloud, "x"), sp(cloud, "speed"), u(cloud, "u"), wall(cloud, "wall");
-    for (std::size_t i = 0; i < s.position.size(); ++i, ++x, ++sp, ++u, ++wall) {
+    sensor_msgs::PointCloud2Iterator<float> x(cloud, "x"), sp(cloud, "speed"), u(cloud, "u"), wall(cloud, "wall"), table(cloud, "table_u"),
+        difference(cloud, "difference");
+    for (std::size_t i = 0; i < s.position.size(); ++i, ++x, ++sp, ++u, ++wall, ++table, ++difference) {
       x[0] = static_cast<float>(s.position[i].x());
       x[1] = static_cast<float>(s.position[i].y());
       x[2] = static_cast<float>(s.position[i].z());
@@ -233,6 +240,8 @@ class LrmSolverNodelet : public nodelet::Nodelet {
       u[1] = static_cast<float>(s.velocity[i].y());
       u[2] = static_cast<float>(s.velocity[i].z());
       wall[0] = s.wall[i];
+      for (int d = 0; d < 3; ++d) table[d] = static_cast<float>(s.undisturbed[i][d]);
+      difference[0] = static_cast<float>((s.velocity[i] - s.undisturbed[i]).norm());
     }
     slice_.publish(cloud);
   }

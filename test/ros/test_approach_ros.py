@@ -20,6 +20,7 @@ import tf2_ros
 from diagnostic_msgs.msg import DiagnosticArray
 from geometry_msgs.msg import TwistStamped
 from nav_msgs.msg import Odometry
+from sensor_msgs import point_cloud2
 from sensor_msgs.msg import PointCloud2
 
 from ship_lrm.msg import PilotControls, RotorLoads, WakeInfo
@@ -37,6 +38,12 @@ class ApproachLaunch(unittest.TestCase):
             return lambda msg: seen.__setitem__(name, seen.get(name, 0) + 1)
 
         rospy.Subscriber("/rotor/loads", RotorLoads, loads.append)
+        slices = []  # the last lrm/slice
+
+        def keep(m):
+            slices[:] = [m]
+
+        rospy.Subscriber("/lrm/slice", PointCloud2, keep)
         sources = set()  # where the LRM solver says its wake table comes from (diagnostics)
         rospy.Subscriber("/diagnostics", DiagnosticArray, lambda a: sources.update(
             v.value for s in a.status if "LRM solver" in s.name for v in s.values if v.key == "wake table from"))
@@ -65,6 +72,16 @@ class ApproachLaunch(unittest.TestCase):
         for topic in ["/odom", "/ship/twist", "/lrm/slice", "/wake/info", "/diagnostics"]:
             self.assertGreater(seen.get(topic, 0), 0, "nothing on " + topic)
         self.assertGreaterEqual(seen["/odom"], int(DURATION / 0.02) - 2)  # 50 Hz in simulated time
+        # the slice carries the table's air beside the LRM's, and their difference
+        names = ["u", "v", "w", "wall", "table_u", "table_v", "table_w", "difference"]
+        self.assertTrue(slices, "no lrm/slice kept")
+        points = list(point_cloud2.read_points(slices[-1], field_names=names))
+        self.assertGreater(len(points), 100)
+        for u, v, w, wall, tu, tv, tw, d in points:
+            self.assertTrue(all(math.isfinite(a) for a in (tu, tv, tw, d)))
+            self.assertAlmostEqual(d, math.sqrt((u - tu) ** 2 + (v - tv) ** 2 + (w - tw) ** 2), delta=1e-3 * (1 + d))
+        wind = math.sqrt(sum(a * a for a in points[0][4:7]))
+        self.assertGreater(wind, 1.0)  # the tiny table's air relative to the domain: wind and path speed
         self.assertEqual(sources, {rospy.get_param("~wake_source", "file")})
         self.assertGreater(float(jobs.get("job (ms), p99 of the last 1000", 0)), 0.0)
         self.assertLessEqual(float(jobs["job (ms), p50 of the last 1000"]), float(jobs["job (ms), p99 of the last 1000"]))
