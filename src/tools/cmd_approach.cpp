@@ -141,6 +141,9 @@ std::function<int()> add_approach_command(CLI::App& app) {
       std::cout << " (N = " << d->config().nodes << ", a = " << d->config().reach << ", " << d->cells_per_edge() << "^3 cells, "
                 << d->solver().backend_name() << ", LBM step " << d->time_step() * 1e3 << " ms, faces " << o->faces.label() << ")";
     std::cout << "\n";
+    if (o->no_rotor_forces)
+      std::cout << "approach: --no-rotor-forces: the rotor's forces stay off the LRM's fluid, so its loads are those of a rotor "
+                   "without its own induced flow (a diagnostic of the domain's air, not a flight)\n";
     std::ofstream csv(dir / "approach.csv");
     write_header(csv);
     write_row(csv, run.sample());
