@@ -8,6 +8,15 @@
 
 namespace ship_lrm::lrm {
 
+namespace {
+// "a, b, ... or z": the choices for an error message
+std::string choices(const std::vector<std::string>& names) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i) s += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return s;
+}
+}  // namespace
+
 const std::vector<std::string>& face_setup_names() {
   static const std::vector<std::string> names = {"thesis", "open-sides", "open", "pressure", "ambient", "ambient-sides"};
   return names;
@@ -43,16 +52,16 @@ void apply_face_setup(const std::string& name, LrmConfig& cfg) {
     cfg.entraining_pressure_faces = true;
     return;
   }
-  throw lbm::ConfigError("unknown face set-up '" + name + "' (thesis, open-sides, open, pressure, ambient or ambient-sides)");
+  throw lbm::ConfigError("unknown face set-up '" + name + "' (" + choices(face_setup_names()) + ")");
 }
 
 void relax_faces(const std::vector<std::string>& faces, double sigma, LrmConfig& cfg) {
   if (!(sigma >= 0 && sigma <= 10))
     throw lbm::ConfigError("the outlets' relaxation sigma must lie in [0, 10], not " + std::to_string(sigma));
+  const auto& names = face_names();
   for (const auto& f : faces) {
-    const auto& names = face_names();
     const auto it = std::find(names.begin(), names.end(), f);
-    if (it == names.end()) throw lbm::ConfigError("unknown face '" + f + "' (back, front, left, right, top or bottom)");
+    if (it == names.end()) throw lbm::ConfigError("unknown face '" + f + "' (" + choices(names) + ")");
     cfg.outlet_sigma[it - names.begin()] = sigma;
   }
 }
