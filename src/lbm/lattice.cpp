@@ -169,11 +169,13 @@ void Lattice::set_slip_wall(int x, int y, int z) {
   type_[index(x, y, z)] = static_cast<std::uint8_t>(CellType::SlipWall);
 }
 
-// Reflection rule of a fluid-like cell (see reflect() in lattice_view.hpp): 1 + 2a + (s > 0) when
-// every link with c_a = s (one axis a, one sign s) crosses a slip wall along a (a slip face or a
-// slip-wall cell); else 0 (bounce-back).
+// Reflection rule of a fluid-like cell (see reflect_by_rule() in lattice_view.hpp): the set of
+// complete slip planes it touches, bit 2a + (s > 0) set when every link with c_a = s (one axis a, one
+// sign s) crosses a slip wall along a (a slip face or a slip-wall cell); 0 (bounce-back) if none.
+// A cell in the edge or corner where slip planes meet has two or three bits.
 std::uint8_t Lattice::reflection_mode(int x, int y, int z) const {
   const int n[3] = {cfg_.nx, cfg_.ny, cfg_.nz};
+  std::uint8_t planes = 0;
   for (int a = 0; a < 3; ++a)
     for (int s = -1; s <= 1; s += 2) {
       bool complete = true;
@@ -184,17 +186,26 @@ std::uint8_t Lattice::reflection_mode(int x, int y, int z) const {
           complete = cfg_.faces[2 * a + (p[a] >= n[a] ? 1 : 0)].type == FaceType::SlipWall;
           continue;
         }
+        // Beyond a face along another axis b: across a periodic face the link reaches the far side;
+        // beyond a slip face (the domain's mirror image) or an open face (whose outside continues its
+        // outermost layer: a slip sea that meets an inflow face goes on upstream) the cell the link
+        // meets is the face layer's cell in its place; a no-slip wall face ends the plane.
         bool out = false;
         for (int b = 0; b < 3; ++b)
           if (p[b] < 0 || p[b] >= n[b]) {
-            if (cfg_.faces[2 * b].type != FaceType::Periodic) out = true;
-            p[b] = (p[b] + n[b]) % n[b];
+            const FaceType beyond = cfg_.faces[2 * b + (p[b] >= n[b] ? 1 : 0)].type;
+            if (beyond == FaceType::Periodic)
+              p[b] = (p[b] + n[b]) % n[b];
+            else if (beyond == FaceType::Wall || beyond == FaceType::MovingWall)
+              out = true;
+            else
+              p[b] = p[b] < 0 ? 0 : n[b] - 1;
           }
         complete = !out && static_cast<CellType>(type_[index(p[0], p[1], p[2])] & ~kGeneralBit) == CellType::SlipWall;
       }
-      if (complete) return static_cast<std::uint8_t>(1 + 2 * a + (s > 0 ? 1 : 0));
+      if (complete) planes |= static_cast<std::uint8_t>(1u << (2 * a + (s > 0 ? 1 : 0)));
     }
-  return 0;
+  return planes;
 }
 
 // Links of the cells of each class (cell_class) that leave the domain through a non-periodic face

@@ -223,18 +223,36 @@ SHIP_LRM_HD bool neighbour_along(const LatticeView& v, int x, int y, int z, std:
 }
 
 // Direction into which a population leaving cell c with direction i towards a wall returns to c.
-// The cell's tag (set by Lattice::finalize) selects the rule: 0 = bounce-back (reverse c_i,
-// no-slip); 1 + 2a + (s > 0) = the cell touches a complete plane of slip wall on side s of axis a:
-// links with c_a = s reflect specularly (reverse component a), its other wall links bounce back.
-// Both rules map the directions that hit walls one-to-one onto the directions that come back from
-// them, so every population slot keeps exactly one writer (AA pattern) and mass is conserved.
-// With arriving = true the inverse map is returned: the outgoing direction that comes back as i.
-SHIP_LRM_HD int reflect_by_rule(int mode, int i, bool arriving) {
-  if (mode == 0) return d3q19::opp(i);
-  const int a = (mode - 1) >> 1, s = ((mode - 1) & 1) ? 1 : -1;
-  if (d3q19::c(i, a) != (arriving ? -s : s)) return d3q19::opp(i);
-  return d3q19::index_of(a == 0 ? -d3q19::cx(i) : d3q19::cx(i), a == 1 ? -d3q19::cy(i) : d3q19::cy(i),
-                         a == 2 ? -d3q19::cz(i) : d3q19::cz(i));
+// The cell's tag (set by Lattice::finalize) is its rule: the set of complete slip-wall planes it
+// touches, bit 2a + (s > 0) for the plane on side s of axis a; 0 = none: every wall link bounces back
+// (reverse c_i, no-slip). A link that crosses a slip plane (c_a = s) and has no component along
+// the axis of any other of the cell's slip planes reflects specularly (reverse component a); every
+// other wall link bounces back. In a plane wall that is specular reflection for every link. In the
+// edge where two slip planes meet, every link with a component along the edge (the links that
+// carry the edge-wise momentum) crosses one plane only and reflects specularly, so the edge is
+// free-slip too; the links across the edge (no component along it) bounce back, which reverses them
+// just as the two specular reflections of the exact edge would. Before, such a cell reflected at one
+// plane only and bounced the links through the other back: a no-slip line along every slip edge,
+// and where it met a velocity inlet a singular corner that made the wake precompute's inlet noisy
+// (docs/design.md, "Slip edges"). Both kinds map the directions that hit walls one-to-one onto the
+// directions that come back (a mirrored image has no component along the other slip axes, a
+// bounced one has, unless it crosses no slip plane at all), so every population slot keeps exactly
+// one writer (AA pattern) and mass is conserved. With arriving = true the inverse map is returned:
+// the outgoing direction that comes back as i.
+SHIP_LRM_HD int reflect_by_rule(int planes, int i, bool arriving) {
+  if (planes == 0) return d3q19::opp(i);
+  const int j = arriving ? d3q19::opp(i) : i;  // the link towards the wall
+  for (int a = 0; a < 3; ++a) {
+    const int s = d3q19::c(j, a);
+    if (s == 0 || !((planes >> (2 * a + (s > 0 ? 1 : 0))) & 1)) continue;
+    bool alone = true;  // no component along another slip plane's axis
+    for (int b = 0; b < 3; ++b)
+      if (b != a && d3q19::c(j, b) != 0 && ((planes >> (2 * b)) & 3)) alone = false;
+    if (!alone) return d3q19::opp(i);
+    return d3q19::index_of(a == 0 ? -d3q19::cx(i) : d3q19::cx(i), a == 1 ? -d3q19::cy(i) : d3q19::cy(i),
+                           a == 2 ? -d3q19::cz(i) : d3q19::cz(i));
+  }
+  return d3q19::opp(i);
 }
 SHIP_LRM_HD int reflect(const LatticeView& v, std::size_t c, int i, bool arriving) { return reflect_by_rule(v.tag[c], i, arriving); }
 
@@ -270,7 +288,7 @@ SHIP_LRM_HD void gather(const LatticeView& v, int x, int y, int z, std::size_t c
   const std::int64_t* inner = inner_offsets(v, x, y, z);
   float term[Q], weight[Q];
   SHIP_LRM_UNROLL  // (the directions' components fold; cells next to moving walls were a fifth of a step over the deck)
-  for (int i = 1; i < Q; ++i) {
+      for (int i = 1; i < Q; ++i) {
     std::size_t nb;
     float uw[4];
     term[i] = weight[i] = 0.0f;
