@@ -4,7 +4,7 @@
 # table) as ROS nodelets, headless, in simulated time (`roslaunch ship_lrm approach.launch
 # record:=true`), leaving in build/run/approach/ the bag (approach.bag), the plots (approach.png,
 # approach_wavelets.png) and the summary (approach_summary.csv, approach_loads.csv) made from the bag
-# by scripts/analyze_approach.py. The default wake table is made on first use (about 2 minutes on
+# by scripts/analyze_approach.py. The default wake table is made on first use (about a minute on
 # 2 cores) and cached in ~/.cache/ship_lrm. Without ROS (SHIP_LRM_NO_ROS=1 or no catkin workspace)
 # the ROS-free batch tool `ship_lrm approach` runs the same approach into the same folder instead.
 # Then, as before: the Bo 105 trim sweep and a lateral doublet (build/run/trim.*, doublet_lateral.*)

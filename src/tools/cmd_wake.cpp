@@ -49,7 +49,8 @@ std::function<int()> add_wake_command(CLI::App& app) {
   cmd->add_option("--backend", *backend, "cpu, cuda or auto");
   cmd->add_option("--smagorinsky", opt->domain.smagorinsky, "Smagorinsky constant s (thesis 6.2: 0.025)");
   cmd->add_option("--viscosity", opt->domain.viscosity, "kinematic viscosity, m^2/s (thesis tables 6.2, 6.3: 1.46072e-4)");
-  cmd->add_option("--lattice-wind", opt->domain.lattice_wind, "the wind in lattice units (default 0.1, Mach 0.17)");
+  cmd->add_option("--lattice-wind", opt->domain.lattice_wind,
+                  "the wind in lattice units (default 0.045, Mach 0.078, the thesis' full-scale value; BGK is unstable from Mach 0.15)");
   cmd->add_flag("--no-slip-sea", opt->domain.no_slip_sea, "no-slip sea surface (the thesis) instead of slip");
   cmd->add_option("--out", opt->out, "wake table FILE.h5 (FILE.xdmf, FILE_centre_plane.csv/.png beside it)");
   cmd->add_option("--checkpoint-every", opt->checkpoint_seconds, "wall-clock seconds between checkpoints (FILE.h5.ckpt)");

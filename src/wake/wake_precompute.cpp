@@ -184,9 +184,9 @@ std::vector<float> CentrePlaneStats::tke(int phase) const {
 }
 
 std::string default_table_path() {
-  if (const char* p = std::getenv("SHIP_LRM_WAKE_CACHE")) return std::string(p) + "/wake_default_v1.h5";
+  if (const char* p = std::getenv("SHIP_LRM_WAKE_CACHE")) return std::string(p) + "/wake_default_v2.h5";
   const char* home = std::getenv("HOME");
-  return std::string(home ? home : ".") + "/.cache/ship_lrm/wake_default_v1.h5";
+  return std::string(home ? home : ".") + "/.cache/ship_lrm/wake_default_v2.h5";
 }
 
 PrecomputeOptions preset(const std::string& name) {

@@ -113,11 +113,11 @@ TEST(OpenBoundaries, ImpedanceOutletPassesSteadyFlow) {
 
 // A uniform stream enters through a velocity inlet into a box whose sides and top are slip walls and
 // whose floor is slip-wall cells (the ship-wake domain's sea), and leaves through an impedance
-// outlet: nothing in it is a source of shear, so it must stay uniform, at the wake's lattice wind of
-// 0.1, to 0.5 % (the bound of issue 4, acceptance 3, for the LRM's uniform stream). The inlet cells
+// outlet: nothing in it is a source of shear, so it must stay uniform, at lattice velocity 0.1
+// (Mach 0.17), to 0.5 % (the bound of issue 4, acceptance 3, for the LRM's uniform stream). The inlet cells
 // above the sea touch a complete slip plane (the sea goes on upstream of the inlet); counting the
 // links that leave through the inlet as leaving the plane, as before, made them bounce back there:
-// a no-slip corner that spoiled the stream by 20 % and seeded the wake's noisy inlet.
+// a no-slip corner that spoiled the stream (by 67 % here).
 TEST(OpenBoundaries, UniformStreamOverSlipSeaStaysUniform) {
   LatticeConfig cfg = periodic_config(40, 10, 10, 0.01f);
   const float U = 0.1f;

@@ -6,6 +6,9 @@
 #include <filesystem>
 
 #include "ship_lrm/lbm/lattice.hpp"
+#include "ship_lrm/lbm/stream_stability.hpp"
+#include "ship_lrm/lbm/units.hpp"
+#include "ship_lrm/wake/ship_geometry.hpp"
 #include "ship_lrm/wake/wake_precompute.hpp"
 #include "temp_path.hpp"
 
@@ -39,10 +42,10 @@ TEST(WakePrecompute, StoppedRunResumesToTheSameTable) {
   PrecomputeOptions o = preset("tiny");
   o.domain.backend = ship_lrm::lbm::Backend::Cpu;
   o.out = temp("whole.h5");
-  precompute_wake(o);
+  const PrecomputeResult whole = precompute_wake(o);
   PrecomputeOptions s = o;
   s.out = temp("stopped.h5");
-  s.stop_at_step = 240;  // after the first frames
+  s.stop_at_step = std::lround((o.startup + 1.5 * o.frame_interval) / whole.dt);  // after the first two frames
   const PrecomputeResult first = precompute_wake(s);
   ASSERT_TRUE(first.interrupted);
   ASSERT_TRUE(fs::exists(s.out + ".ckpt"));
@@ -121,4 +124,37 @@ TEST(WakePrecompute, FlowSeparatesBehindTheHangarDoor) {
   // and upstream of the bow the flow is the wind
   for (int i = 0; i < s.nx; ++i)
     if (std::abs(s.x[i] - 3.5) < 0.03) EXPECT_NEAR(mean[3 * (i + static_cast<std::size_t>(s.nx) * (s.nz / 3))], -9.77, 0.1 * 9.77);
+}
+
+// The default lattice wind keeps the wake's stream within the collision's stable range. BGK +
+// Smagorinsky near tau = 1/2 is unstable above a lattice Mach number of about 0.15 (Lallemand & Luo
+// 2000, Phys. Rev. E 61, 6546, section V); an unstable stream turns the ship's disturbance into noise
+// that grows at the inlet. The probe (stream_stability.hpp) runs at the wake's lattice viscosity and
+// Smagorinsky constant, for the model case (N = 48, 9.77 m/s) and the default table, at 1.15 times the
+// wind: the fastest mean flow on the centre plane of the model case is 1.11 U (above the mast). There
+// a disturbance must decay; at the former default lattice wind 0.1 it grows (the noisy inlet of
+// sessions 13 - 33).
+TEST(WakePrecompute, DefaultLatticeWindKeepsTheStreamStable) {
+  WakeConfig model;
+  model.wind = 9.77;
+  model.density = 1.225;
+  const WakeConfig full = preset("default").domain;
+  for (const auto& [cfg, scale] : {std::pair{model, "model"}, std::pair{full, "full"}}) {
+    const double length = make_ship("natogd", scale)->datum().length;
+    for (const double lattice_wind : {cfg.lattice_wind, 0.1}) {
+      WakeConfig c = cfg;
+      c.lattice_wind = lattice_wind;
+      ship_lrm::lbm::StreamStabilityCase probe;
+      probe.mach = static_cast<float>(1.15 * lattice_wind * std::sqrt(3.0));
+      probe.nu = static_cast<float>(wake_units(c, length).lattice_viscosity());
+      probe.smagorinsky = static_cast<float>(c.smagorinsky);
+      probe.steps = 4000;
+      probe.sample_interval = 4000;
+      const double growth = ship_lrm::lbm::run_stream_stability(probe).growth();
+      if (lattice_wind == cfg.lattice_wind)
+        EXPECT_LT(growth, 1.0) << scale << ": the default lattice wind " << lattice_wind << " (Mach " << probe.mach << ")";
+      else
+        EXPECT_GT(growth, 1.0) << scale << ": the probe no longer finds BGK unstable at Mach " << probe.mach;
+    }
+  }
 }

@@ -25,9 +25,13 @@
 namespace ship_lrm::wake {
 
 struct WakeConfig {
-  int cells_per_length = 48;      // N_ship: cells per ship length (the thesis converges at 364)
-  double wind = 20.58;            // m/s, wind over the deck from ahead (thesis 9.1: 20.58 full scale, 7: 9.77 model)
-  double lattice_wind = 0.1;      // the wind in lattice units (Mach 0.17); the thesis' 0.3 c_s at 60 / 80 m/s gives 0.028 / 0.045
+  int cells_per_length = 48;  // N_ship: cells per ship length (the thesis converges at 364)
+  double wind = 20.58;        // m/s, wind over the deck from ahead (thesis 9.1: 20.58 full scale, 7: 9.77 model)
+  // The wind in lattice units: Mach 0.078, the thesis' full-scale value (0.3 c_s at 80 m/s). BGK +
+  // Smagorinsky at the wake's tau is unstable from Mach 0.15 - 0.16 (`ship_lrm validate
+  // stream-stability`); at 0.1 (Mach 0.17, the default until session 34) the ship seeded a growing
+  // noise at the inlet (docs/design.md, "Ship wake").
+  double lattice_wind = 0.045;
   double viscosity = 1.46072e-4;  // m^2/s (thesis tables 6.2, 6.3)
   double density = 1.1934;        // kg/m^3 (1.225 for the model, table 6.2)
   double smagorinsky = 0.025;     // thesis 6.2
