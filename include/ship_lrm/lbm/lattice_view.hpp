@@ -233,8 +233,8 @@ SHIP_LRM_HD bool neighbour_along(const LatticeView& v, int x, int y, int z, std:
 // free-slip too; the links across the edge (no component along it) bounce back, which reverses them
 // just as the two specular reflections of the exact edge would. Before, such a cell reflected at one
 // plane only and bounced the links through the other back: a no-slip line along every slip edge,
-// and where it met a velocity inlet a singular corner that made the wake precompute's inlet noisy
-// (docs/design.md, "Slip edges"). Both kinds map the directions that hit walls one-to-one onto the
+// and where it met a velocity inlet a singular corner, one of the two causes of the wake
+// precompute's noisy inlet (docs/design.md, "Slip edges"). Both kinds map the directions that hit walls one-to-one onto the
 // directions that come back (a mirrored image has no component along the other slip axes, a
 // bounced one has, unless it crosses no slip plane at all), so every population slot keeps exactly
 // one writer (AA pattern) and mass is conserved. With arriving = true the inverse map is returned:
@@ -288,7 +288,7 @@ SHIP_LRM_HD void gather(const LatticeView& v, int x, int y, int z, std::size_t c
   const std::int64_t* inner = inner_offsets(v, x, y, z);
   float term[Q], weight[Q];
   SHIP_LRM_UNROLL  // (the directions' components fold; cells next to moving walls were a fifth of a step over the deck)
-      for (int i = 1; i < Q; ++i) {
+  for (int i = 1; i < Q; ++i) {
     std::size_t nb;
     float uw[4];
     term[i] = weight[i] = 0.0f;

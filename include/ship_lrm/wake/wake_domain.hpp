@@ -30,7 +30,7 @@ struct WakeConfig {
   // The wind in lattice units: Mach 0.078, the thesis' full-scale value (0.3 c_s at 80 m/s). BGK +
   // Smagorinsky at the wake's tau is unstable from Mach 0.15 - 0.16 (`ship_lrm validate
   // stream-stability`); at 0.1 (Mach 0.17, the default until session 34) the ship seeded a growing
-  // noise at the inlet (docs/design.md, "Ship wake").
+  // noise at the inlet (docs/design.md, "The noisy inlet").
   double lattice_wind = 0.045;
   double viscosity = 1.46072e-4;  // m^2/s (thesis tables 6.2, 6.3)
   double density = 1.1934;        // kg/m^3 (1.225 for the model, table 6.2)
