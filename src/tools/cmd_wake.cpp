@@ -78,6 +78,13 @@ std::function<int()> add_wake_command(CLI::App& app) {
       if (o.out.empty() && *preset == "default") o.out = wake::default_table_path();
     }
     if (o.out.empty()) throw CLI::ValidationError("--out", "give the table file (FILE.h5)");
+    // BGK + Smagorinsky at the wake's relaxation time is unstable from about lattice Mach 0.15 and the
+    // flow over the superstructure reaches 1.11 times the wind (docs/design.md, "The noisy inlet")
+    if (const double mach = 1.15 * o.domain.lattice_wind * std::sqrt(3.0); mach > 0.15)
+      std::fprintf(stderr,
+                   "ship_lrm: warning: --lattice-wind %g puts the flow over the ship at lattice Mach %.2f, in BGK's unstable range (from "
+                   "about 0.15; `ship_lrm validate stream-stability`): expect noise growing from the inlet. The default 0.045 is stable\n",
+                   o.domain.lattice_wind, mach);
     o.domain.density = o.scale == "model" ? 1.225 : 1.1934;  // thesis tables 6.2, 6.3
     o.domain.backend = lbm::parse_backend(*backend);
     if ((*flags)[2]) o.half_precision = false;
