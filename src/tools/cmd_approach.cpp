@@ -69,6 +69,10 @@ std::function<int()> add_approach_command(CLI::App& app) {
   cmd->add_option("--hover-at", o->cfg.path.hover_at, "s, hover from here")->capture_default_str();
   cmd->add_option("--trim-speed", o->cfg.trim_speed, "m/s airspeed of the fixed controls' trim (default: |wind| + speed)");
   cmd->add_option("--table-offset", o->cfg.table_offset, "s into the table at t = 0")->capture_default_str();
+  cmd->add_option("--lattice-margin", o->cfg.lattice_margin,
+                  "lrm: the lattice's reference speed (Mach 0.3) over |wind| + path speed; larger: a slower lattice stream, more steps")
+      ->check(CLI::Range(1.0, 20.0))
+      ->capture_default_str();
   cmd->add_flag("--no-ship", o->no_ship, "lrm: no ship or sea walls in the LRM domain");
   cmd->add_flag("--no-fuselage", o->no_fuselage, "lrm: no fuselage walls in the LRM domain");
   o->faces.add_to(*cmd);
