@@ -144,7 +144,7 @@ class CpuSolver final : public Solver {
   // One segment of fluid cells (see Segment): bulk cells through fixed offsets, cells next to
   // resting walls through one table of addresses; both loops vectorise. The vector loops take whole
   // groups of kLanes cells; the rest of the segment (fewer) goes through update_segment_rest.
-  template <bool kOdd, bool kSmagorinsky, int kForce, bool kStoreState>
+  template <bool kOdd, int kCollision, int kForce, bool kStoreState>
   void update_segment(const Segment& sg) {
     const LatticeView& v = view_;
     const std::int64_t* off = v.row_offsets + Q * sg.cell_class;
@@ -159,15 +159,15 @@ class CpuSolver final : public Solver {
     if (sg.link_mask == 0) {
 #pragma omp simd
       for (std::size_t c = first; c < whole; ++c)
-        update_bulk_cell<kOdd, kSmagorinsky, kForce, kStoreState>(v, c, static_cast<float>(x0 + static_cast<int>(c - first)), y, z, off);
+        update_bulk_cell<kOdd, kCollision, kForce, kStoreState>(v, c, static_cast<float>(x0 + static_cast<int>(c - first)), y, z, off);
     } else {
 #pragma omp simd
       for (std::size_t c = first; c < whole; ++c)
-        update_segment_cell<kSmagorinsky, kForce, kStoreState>(v, c, static_cast<float>(x0 + static_cast<int>(c - first)), y, z, src, dst);
+        update_segment_cell<kCollision, kForce, kStoreState>(v, c, static_cast<float>(x0 + static_cast<int>(c - first)), y, z, src, dst);
     }
     if (whole < last)
-      update_segment_rest<kSmagorinsky, kForce, kStoreState>(whole, last, static_cast<float>(x0 + static_cast<int>(whole - first)), y, z,
-                                                             src, dst);
+      update_segment_rest<kCollision, kForce, kStoreState>(whole, last, static_cast<float>(x0 + static_cast<int>(whole - first)), y, z, src,
+                                                           dst);
   }
 
   // The last cells [c0, c1) of a segment, fewer than kLanes, at positions x0, x0 + 1, ...: a loop with
@@ -176,7 +176,7 @@ class CpuSolver final : public Solver {
   // copied into kLanes lanes (the spare ones a fluid at rest), updated there by the same per-cell
   // code in one vector pass, and copied back; a view whose per-cell arrays are those lanes
   // (ncells = kLanes) serves the force field and the stored states.
-  template <bool kSmagorinsky, int kForce, bool kStoreState>
+  template <int kCollision, int kForce, bool kStoreState>
   void update_segment_rest(std::size_t c0, std::size_t c1, float x0, float y, float z, pop_t* const src[Q], pop_t* const dst[Q]) {
     const LatticeView& v = view_;
     const std::size_t n = c1 - c0;
@@ -200,7 +200,7 @@ class CpuSolver final : public Solver {
     // and the frame's forces (which need x) made this loop scalar there (0.4 of the turning step)
 #pragma omp simd
     for (int k = 0; k < static_cast<int>(kLanes); ++k)
-      update_segment_cell<kSmagorinsky, kForce, kStoreState>(lanes, k, x0 + static_cast<float>(k), y, z, lane_in, lane_out);
+      update_segment_cell<kCollision, kForce, kStoreState>(lanes, k, x0 + static_cast<float>(k), y, z, lane_in, lane_out);
     for (int i = 0; i < Q; ++i) store_lanes(dst[i] + c0, out[i], n);
     if (kStoreState)
       for (int a = 0; a < 4; ++a) store_lanes(v.aux + a * v.ncells + c0, aux[a], n);
@@ -233,9 +233,9 @@ class CpuSolver final : public Solver {
     for (std::size_t k = 0; k < kN; ++k) to[k] = from[k];
   }
 
-  template <bool kOdd, bool kSmagorinsky, int kForce>
+  template <bool kOdd, int kCollision, int kForce>
   void update_segment(const Segment& sg, bool store) {
-    store ? update_segment<kOdd, kSmagorinsky, kForce, true>(sg) : update_segment<kOdd, kSmagorinsky, kForce, false>(sg);
+    store ? update_segment<kOdd, kCollision, kForce, true>(sg) : update_segment<kOdd, kCollision, kForce, false>(sg);
   }
 
   // Cells without a field force while the field is on (the rotor's force density covers a few per
@@ -275,7 +275,7 @@ class CpuSolver final : public Solver {
   // inputs are kept as columns (rho, u, S, F, p): strided or indirect loads would stop GCC from
   // vectorising (it emits no gathers for AMD Zen, and none for groups of 3).
   static constexpr int kBoundaryBlock = 64;
-  template <bool kOdd, bool kSmagorinsky, int kForce>
+  template <bool kOdd, int kCollision, int kForce>
   void update_boundary_block(int b0) {
     const LatticeView& v = view_;
     const int n = std::min(kBoundaryBlock, v.nbnd - b0);
@@ -283,7 +283,7 @@ class CpuSolver final : public Solver {
       bool forced = false;
       for (int k = 0; k < n && !forced; ++k) forced = field_force_at(v.bnd_cell[b0 + k]);
       if (!forced)
-        return with_field_if<kForce>(false, [&](auto mode) { update_boundary_block<kOdd, kSmagorinsky, decltype(mode)::value>(b0); });
+        return with_field_if<kForce>(false, [&](auto mode) { update_boundary_block<kOdd, kCollision, decltype(mode)::value>(b0); });
     }
     alignas(64) float X[16][kBoundaryBlock];
     alignas(64) float G[Q][kBoundaryBlock];
@@ -304,7 +304,7 @@ class CpuSolver final : public Solver {
       const float F[3] = {X[10][k], X[11][k], X[12][k]};
       const float p[3] = {X[13][k], X[14][k], X[15][k]};
       float g[Q];
-      boundary_collide<kSmagorinsky, kForce>(v, m, S, F, p, g);
+      boundary_collide<kCollision, kForce>(v, m, S, F, p, g);
       SHIP_LRM_UNROLL
       for (int i = 0; i < Q; ++i) G[i][k] = g[i];
     }
@@ -318,7 +318,7 @@ class CpuSolver final : public Solver {
   // The passes of a step (see update_boundary_state in lattice_view.hpp), then the held cells
   // (hold_cell), in one parallel region. Each loop is a TeamLoop (team_loop.hpp): a static share per
   // thread that the others finish when it is held up.
-  template <bool kOdd, bool kSmagorinsky, int kForce>
+  template <bool kOdd, int kCollision, int kForce>
   void run_step() {
     const LatticeView& v = view_;
     const auto& segs = lattice_.bulk_segments();
@@ -339,7 +339,7 @@ class CpuSolver final : public Solver {
       loops_[0].run(t, [&](long s) {
         const bool st = store && segs[s].store_state;
         const bool forced = has_force_field(kForce) && segment_forced_[s];  // (sized only once a field is set)
-        with_field_if<kForce>(forced, [&](auto mode) { update_segment<kOdd, kSmagorinsky, decltype(mode)::value>(segs[s], st); });
+        with_field_if<kForce>(forced, [&](auto mode) { update_segment<kOdd, kCollision, decltype(mode)::value>(segs[s], st); });
       });
       loops_[1].run(t, [&](long k) { update_wall_cell<kOdd>(v, general[k], masks[k]); });
       if (v.nbnd) {
@@ -347,7 +347,7 @@ class CpuSolver final : public Solver {
         // every support cell's state is stored
         loops_[2].run(t, [&](long b) { update_boundary_state<kOdd>(v, static_cast<int>(b)); });
 #pragma omp barrier
-        loops_[3].run(t, [&](long k) { update_boundary_block<kOdd, kSmagorinsky, kForce>(static_cast<int>(k * kBoundaryBlock)); });
+        loops_[3].run(t, [&](long k) { update_boundary_block<kOdd, kCollision, kForce>(static_cast<int>(k * kBoundaryBlock)); });
       }
       if (v.nheld) {
 #pragma omp barrier
@@ -357,24 +357,24 @@ class CpuSolver final : public Solver {
     }
   }
 
-  template <bool kOdd, bool kSmagorinsky>
+  template <bool kOdd, int kCollision>
   void run_step_forced() {
     switch (force_mode(view_)) {
       case kNoForce:
-        return run_step<kOdd, kSmagorinsky, kNoForce>();
+        return run_step<kOdd, kCollision, kNoForce>();
       case kUniformForce:
-        return run_step<kOdd, kSmagorinsky, kUniformForce>();
+        return run_step<kOdd, kCollision, kUniformForce>();
       case kForceField:
-        return run_step<kOdd, kSmagorinsky, kForceField>();
+        return run_step<kOdd, kCollision, kForceField>();
       case kFrameForce:
-        return run_step<kOdd, kSmagorinsky, kFrameForce>();
+        return run_step<kOdd, kCollision, kFrameForce>();
       default:
-        return run_step<kOdd, kSmagorinsky, kFrameForceField>();
+        return run_step<kOdd, kCollision, kFrameForceField>();
     }
   }
   template <bool kOdd>
   void run_step_dispatch() {
-    view_.params.smagorinsky > 0.0f ? run_step_forced<kOdd, true>() : run_step_forced<kOdd, false>();
+    with_collision_kind(view_.params, [&](auto kind) { run_step_forced<kOdd, decltype(kind)::value>(); });
   }
   void do_step(bool odd) override { odd ? run_step_dispatch<true>() : run_step_dispatch<false>(); }
 

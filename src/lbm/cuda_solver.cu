@@ -55,7 +55,7 @@ unsigned blocks(std::size_t n) { return static_cast<unsigned>((n + kBlock - 1) /
 
 // Pass 0 over every cell. (A split that ran the open-boundary passes on a second stream beside the
 // interior was measured slower on the H100: docs/benchmarks.md, session 12.)
-template <bool kOdd, bool kSmagorinsky, int kForce>
+template <bool kOdd, int kCollision, int kForce>
 __global__ void fluid_kernel(LatticeView v, const std::uint32_t* __restrict__ masks) {
   const std::size_t c = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (c >= v.ncells) return;
@@ -68,9 +68,9 @@ __global__ void fluid_kernel(LatticeView v, const std::uint32_t* __restrict__ ma
     // With open boundaries every fluid cell stores its state (aux): a flag per cell would cost
     // about as much as the 16 bytes (the CPU backend stores only its support cells').
     if (v.aux)
-      update_bulk_cell<kOdd, kSmagorinsky, kForce, true>(v, c, px, py, pz, off);
+      update_bulk_cell<kOdd, kCollision, kForce, true>(v, c, px, py, pz, off);
     else
-      update_bulk_cell<kOdd, kSmagorinsky, kForce, false>(v, c, px, py, pz, off);
+      update_bulk_cell<kOdd, kCollision, kForce, false>(v, c, px, py, pz, off);
   } else if (t == (static_cast<std::uint8_t>(CellType::Fluid) | kGeneralBit)) {
     update_wall_cell<kOdd>(v, c, masks[c]);
   }
@@ -82,10 +82,10 @@ __global__ void boundary_state_kernel(LatticeView v) {
   if (b < v.nbnd) update_boundary_state<kOdd>(v, b);
 }
 
-template <bool kOdd, bool kSmagorinsky, int kForce>
+template <bool kOdd, int kCollision, int kForce>
 __global__ void boundary_kernel(LatticeView v) {
   const int b = blockIdx.x * blockDim.x + threadIdx.x;
-  if (b < v.nbnd) update_boundary_cell<kOdd, kSmagorinsky, kForce>(v, b);
+  if (b < v.nbnd) update_boundary_cell<kOdd, kCollision, kForce>(v, b);
 }
 
 template <bool kOdd>
@@ -392,32 +392,32 @@ class CudaSolver final : public Solver {
   }
 
   // The passes of a step (see update_boundary_state in lattice_view.hpp), in stream order.
-  template <bool kOdd, bool kSmagorinsky, int kForce>
+  template <bool kOdd, int kCollision, int kForce>
   void launch_step() {
-    fluid_kernel<kOdd, kSmagorinsky, kForce><<<blocks(view_.ncells), kBlock>>>(view_, link_mask_.data());
+    fluid_kernel<kOdd, kCollision, kForce><<<blocks(view_.ncells), kBlock>>>(view_, link_mask_.data());
     if (view_.nbnd) {
       boundary_state_kernel<kOdd><<<blocks(view_.nbnd), kBlock>>>(view_);
-      boundary_kernel<kOdd, kSmagorinsky, kForce><<<blocks(view_.nbnd), kBlock>>>(view_);
+      boundary_kernel<kOdd, kCollision, kForce><<<blocks(view_.nbnd), kBlock>>>(view_);
     }
   }
-  template <bool kOdd, bool kSmagorinsky>
+  template <bool kOdd, int kCollision>
   void launch_step_forced() {
     switch (force_mode(view_)) {
       case kNoForce:
-        return launch_step<kOdd, kSmagorinsky, kNoForce>();
+        return launch_step<kOdd, kCollision, kNoForce>();
       case kUniformForce:
-        return launch_step<kOdd, kSmagorinsky, kUniformForce>();
+        return launch_step<kOdd, kCollision, kUniformForce>();
       case kForceField:
-        return launch_step<kOdd, kSmagorinsky, kForceField>();
+        return launch_step<kOdd, kCollision, kForceField>();
       case kFrameForce:
-        return launch_step<kOdd, kSmagorinsky, kFrameForce>();
+        return launch_step<kOdd, kCollision, kFrameForce>();
       default:
-        return launch_step<kOdd, kSmagorinsky, kFrameForceField>();
+        return launch_step<kOdd, kCollision, kFrameForceField>();
     }
   }
   template <bool kOdd>
   void run_step() {
-    view_.params.smagorinsky > 0.0f ? launch_step_forced<kOdd, true>() : launch_step_forced<kOdd, false>();
+    with_collision_kind(view_.params, [&](auto kind) { launch_step_forced<kOdd, decltype(kind)::value>(); });
   }
   void do_step(bool odd) override {
     odd ? run_step<true>() : run_step<false>();

@@ -17,6 +17,14 @@ Backend parse_backend(const std::string& s) {
 
 const char* to_string(Backend b) { return b == Backend::Cpu ? "cpu" : (b == Backend::Cuda ? "cuda" : "auto"); }
 
+CollisionModel parse_collision_model(const std::string& s) {
+  if (s == "bgk") return CollisionModel::Bgk;
+  if (s == "recursive") return CollisionModel::RecursiveRegularized;
+  throw ConfigError("unknown collision '" + s + "' (use bgk or recursive)");
+}
+
+const char* to_string(CollisionModel m) { return m == CollisionModel::Bgk ? "bgk" : "recursive"; }
+
 static std::string divergence_message(long step, int x, int y, int z, float speed, float limit) {
   std::ostringstream s;
   s << "LBM diverged at step " << step << ", cell (" << x << ", " << y << ", " << z << "): speed " << speed

@@ -27,6 +27,7 @@ StreamStabilityResult run_stream_stability(const StreamStabilityCase& c) {
   cfg.nx = cfg.ny = cfg.nz = n;
   cfg.collision.nu = c.nu;
   cfg.collision.smagorinsky = c.smagorinsky;
+  cfg.collision.model = c.collision;
   for (auto& f : cfg.faces) f.type = FaceType::Periodic;
   cfg.guard_interval = 16;
   auto solver = make_solver(Lattice(cfg), c.backend);

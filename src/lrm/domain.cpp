@@ -35,6 +35,7 @@ lbm::Lattice make_lattice(const LrmConfig& c, const lbm::UnitConverter& u, int e
   lc.nx = lc.ny = lc.nz = edge;
   lc.collision.nu = static_cast<float>(u.lattice_viscosity());
   lc.collision.smagorinsky = static_cast<float>(c.smagorinsky);
+  lc.collision.model = c.collision;
   for (int f = 0; f < 6; ++f) {
     lc.faces[f].type = c.faces[f];
     lc.faces[f].inflow_from_reference = true;  // the faces know the undisturbed air (set_motion)

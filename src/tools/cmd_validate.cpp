@@ -23,6 +23,7 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
     std::string machs = "0.15,0.225,0.3";
     float nu = 1.37e-7f;
     float smagorinsky = 0.05f;
+    std::string collision = "bgk";
     int size = 32;
     long steps = 2000;
     float amplitude = 1e-4f;
@@ -35,8 +36,11 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
   cmd->add_option("--nu", o->nu, "lattice viscosity (the LRM's for air: 1.37e-7 at N = 32, 6.8e-8 at N = 64)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  cmd->add_option("--smagorinsky", o->smagorinsky, "Smagorinsky constant s (the LRM's: 0.05; 0: plain BGK)")
+  cmd->add_option("--smagorinsky", o->smagorinsky, "Smagorinsky constant s (the LRM's: 0.05; 0: none)")
       ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--collision", o->collision, "bgk or recursive (recursive regularised, Coreixas et al. 2017)")
+      ->check(CLI::IsMember({"bgk", "recursive"}))
       ->capture_default_str();
   cmd->add_option("--size", o->size, "cells per edge of the periodic box")->check(CLI::Range(4, 512))->capture_default_str();
   cmd->add_option("--steps", o->steps, "steps per case")->check(CLI::Range(1L, 100000000L))->capture_default_str();
@@ -62,6 +66,7 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
       c.mach = static_cast<float>(mach);
       c.nu = o->nu;
       c.smagorinsky = o->smagorinsky;
+      c.collision = lbm::parse_collision_model(o->collision);
       c.amplitude = o->amplitude;
       c.seed = o->seed == "shear" ? lbm::StreamStabilityCase::Seed::ShearWave : lbm::StreamStabilityCase::Seed::Random;
       c.steps = o->steps;

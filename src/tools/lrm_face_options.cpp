@@ -24,6 +24,11 @@ void LrmFaceOptions::add_to(CLI::App& cmd) {
   cmd.add_flag("--rotor-far-field", far_field,
                "the faces' air includes the rotor's own induced velocity (vortex-cylinder wake of the uniformly loaded disk), "
                "which takes out most of the faces' interference");
+  cmd.add_option("--collision", collision,
+                 "LBM collision: bgk (the thesis') or recursive (recursive regularised, Coreixas et al. 2017: stable at the "
+                 "LRM's lattice Mach number 0.3, where BGK's stream grows noise)")
+      ->check(CLI::IsMember({"bgk", "recursive"}))
+      ->capture_default_str();
 }
 
 void refuse_lrm_options(const CLI::App& cmd, std::initializer_list<const char*> others) {
@@ -31,7 +36,7 @@ void refuse_lrm_options(const CLI::App& cmd, std::initializer_list<const char*> 
     if (cmd.get_option(name)->count() > 0) throw CLI::ValidationError(name, "applies to the LRM only: add --inflow lrm");
   };
   for (const char* name : others) refuse(name);
-  for (const char* name : {"--faces", "--outlet-sigma", "--relaxed-faces", "--rotor-far-field"}) refuse(name);
+  for (const char* name : {"--faces", "--outlet-sigma", "--relaxed-faces", "--rotor-far-field", "--collision"}) refuse(name);
 }
 
 std::string LrmFaceOptions::label() const {
@@ -42,6 +47,7 @@ std::string LrmFaceOptions::label() const {
     for (size_t k = 0; k < relaxed_faces.size(); ++k) s << (k ? "/" : "") << relaxed_faces[k];
   }
   if (far_field) s << ";rotor-far-field";
+  if (collision != "bgk") s << ";" << collision;
   return s.str();
 }
 
@@ -49,6 +55,7 @@ void LrmFaceOptions::apply(lrm::LrmConfig& cfg) const {
   lrm::apply_face_setup(faces, cfg);
   lrm::relax_faces(relaxed_faces, outlet_sigma, cfg);
   cfg.rotor_far_field = far_field;
+  cfg.collision = lbm::parse_collision_model(collision);
 }
 
 }  // namespace ship_lrm::tools

@@ -16,12 +16,13 @@ struct LrmFaceOptions {
   double outlet_sigma = 0.0;
   std::vector<std::string> relaxed_faces = {"back", "top", "bottom"};
   bool far_field = false;
+  std::string collision = "bgk";
 
-  // --faces, --outlet-sigma, --relaxed-faces, --rotor-far-field
+  // --faces, --outlet-sigma, --relaxed-faces, --rotor-far-field, --collision
   void add_to(CLI::App& cmd);
   // The faces column of the CSVs: the set-up, the relaxed outlets when there are any, the far field.
   std::string label() const;
-  // Sets cfg's faces, outlet relaxation and far field; lbm::ConfigError for an unknown set-up.
+  // Sets cfg's faces, outlet relaxation, far field and collision; lbm::ConfigError for an unknown set-up.
   void apply(lrm::LrmConfig& cfg) const;
 };
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cmath>
+#include <type_traits>
 
 #include "ship_lrm/lbm/d3q19.hpp"
 
@@ -28,11 +29,46 @@ struct Macro {
   float u[3] = {0.0f, 0.0f, 0.0f};
 };
 
+// The collision operator (docs/design.md, "The collision"):
+// - Bgk: single relaxation time, thesis eq. 6.9.
+// - RecursiveRegularized: the non-equilibrium part is rebuilt from its second-order moment and the
+//   third-order moments the recursion of Malaspinas 2015 gives, the equilibrium carries the
+//   third-order terms D3Q19 supports (Coreixas, Wissocq, Puigt, Boussuge & Sagaut 2017, Phys. Rev. E
+//   96, 033306). Same viscosity as BGK, but a uniform stream near tau = 1/2 stays stable to Mach 0.3,
+//   where BGK's grows (docs/benchmarks.md, "The recursive regularised collision").
+enum class CollisionModel : int { Bgk = 0, RecursiveRegularized = 1 };
+
 // Collision parameters in lattice units.
 struct CollisionParams {
   float nu = 1.0f / 6.0f;    // kinematic viscosity; omega = 1 / (3 nu + 1/2) (thesis eq. 6.7)
-  float smagorinsky = 0.0f;  // Smagorinsky constant s (0: plain BGK)
+  float smagorinsky = 0.0f;  // Smagorinsky constant s (0: none)
+  CollisionModel model = CollisionModel::Bgk;
 };
+
+// The collision as a template argument of the update loops (no branch per cell): bit 0 the
+// Smagorinsky model, bit 1 the recursive regularisation.
+constexpr int kSmagorinskyBit = 1, kRecursiveBit = 2;
+SHIP_LRM_HD constexpr int collision_kind(const CollisionParams& p) {
+  return (p.smagorinsky > 0.0f ? kSmagorinskyBit : 0) | (p.model == CollisionModel::RecursiveRegularized ? kRecursiveBit : 0);
+}
+// Calls f(std::integral_constant<int, kind>) with the kind of p (the run-time dispatch of the backends).
+template <class F>
+SHIP_LRM_HD void with_collision_kind(const CollisionParams& p, F&& f) {
+  switch (collision_kind(p)) {
+    case 0:
+      f(std::integral_constant<int, 0>());
+      break;
+    case 1:
+      f(std::integral_constant<int, 1>());
+      break;
+    case 2:
+      f(std::integral_constant<int, 2>());
+      break;
+    default:
+      f(std::integral_constant<int, 3>());
+      break;
+  }
+}
 
 SHIP_LRM_HD float omega_from_nu(float nu) { return 1.0f / (3.0f * nu + 0.5f); }
 
@@ -136,11 +172,11 @@ SHIP_LRM_HD void add_frame_force(const FrameForce& fr, const float p[3], float r
   F[2] += rho * (fr.accel[2] + m[6] * p[0] + m[7] * p[1] + m[8] * p[2]) - 2.0f * (w[0] * j[1] - w[1] * j[0]);
 }
 
-// Norm sqrt(Pi:Pi) of the non-equilibrium momentum flux Pi_ab = sum c_a c_b (f - f_eq)
-// (thesis eq. 6.13). c_a c_b is the same for a direction and its opposite, so the pairs' sums enter
-// (directions 1 - 9 and their opposites 10 - 18, d3q19.hpp); the rest direction has c = 0.
-SHIP_LRM_HD float pi_neq_norm(const float g[Q], const Macro& m) {
-  float p[6] = {0, 0, 0, 0, 0, 0};  // xx yy zz xy xz yz
+// Non-equilibrium momentum flux Pi_ab = sum c_a c_b (f - f_eq) (thesis eq. 6.13) as xx yy zz xy xz yz.
+// c_a c_b is the same for a direction and its opposite, so the pairs' sums enter (directions 1 - 9
+// and their opposites 10 - 18, d3q19.hpp); the rest direction has c = 0.
+SHIP_LRM_HD void pi_neq(const float g[Q], const Macro& m, float p[6]) {
+  for (int k = 0; k < 6; ++k) p[k] = 0.0f;
   const float uu = speed_squared(m.u);
   SHIP_LRM_UNROLL
   for (int i = 1; i <= 9; ++i) {
@@ -153,7 +189,15 @@ SHIP_LRM_HD float pi_neq_norm(const float g[Q], const Macro& m) {
     add_times(p[4], x * z, ne);
     add_times(p[5], y * z, ne);
   }
+}
+// Its norm sqrt(Pi:Pi).
+SHIP_LRM_HD float tensor_norm(const float p[6]) {
   return sqrtf(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + 2.0f * (p[3] * p[3] + p[4] * p[4] + p[5] * p[5]));
+}
+SHIP_LRM_HD float pi_neq_norm(const float g[Q], const Macro& m) {
+  float p[6];
+  pi_neq(g, m, p);
+  return tensor_norm(p);
 }
 
 // Relaxation frequency with the Smagorinsky sub-grid model (thesis 6.1.2, equations after 6.13):
@@ -204,9 +248,99 @@ SHIP_LRM_HD void relax(float g[Q], const Macro& m, const float force[3], const C
     }
   }
 }
+
+// Recursive regularised collision (Malaspinas 2015, "Increasing stability and accuracy of the lattice
+// Boltzmann scheme: recursivity and regularization", arXiv:1505.06900; for D3Q19 Coreixas et al. 2017,
+// Phys. Rev. E 96, 033306, section IV and appendix). Post-collision populations
+//   f_i = f_eq,i + (1 - omega) f_neq,i + 1/2 F_i
+// with f_neq rebuilt from Hermite moments instead of taken from f:
+//   f_neq,i = w_i [ H2_i : a2 / (2 cs^4) + third-order part ],
+// a2 = Pi_neq + (u F + F u) / 2 (the Guo shift: f - f_eq + F_i / 2 is the non-equilibrium part that
+// relaxes, Krueger et al. 2017, The Lattice Boltzmann Method, section 6.3), and its third-order
+// moments from the recursion a3_abc = u_a a2_bc + u_b a2_ac + u_c a2_ab. The equilibrium adds the
+// third-order Hermite terms with a3_eq = rho u_a u_b u_c. D3Q19 holds, per odd axis b and the other two
+// axes a1, a2, the polynomials P+ = H_a1a1b + H_a2a2b = c_b (c_a1^2 + c_a2^2 - 2/3) and
+// P- = H_a1a1b - H_a2a2b = c_b (c_a1^2 - c_a2^2), orthogonal in the w-weighted sum with norms 2/27 and
+// 6/27, so their terms are w_i P_i A / norm with A the moment sum_i P_i f_i (27/2 and 27/6 below).
+// Mass, momentum and Pi relax as in BGK (same viscosity); the moments BGK leaves undamped near
+// tau = 1/2 (the ghosts) are set to their equilibrium, the third-order ones follow a2.
+// Smagorinsky takes |Pi_neq| as in relax<>. The Guo source enters at half weight (guo_source_parts
+// with 1/2), as the rewritten BGK with forcing does.
+template <bool kSmagorinsky, bool kForced = true>
+SHIP_LRM_HD void relax_recursive(float g[Q], const Macro& m, const float force[3], const CollisionParams& p) {
+  float a2[6];
+  pi_neq(g, m, a2);
+  const float omega = kSmagorinsky ? smagorinsky_omega(p.nu, p.smagorinsky, tensor_norm(a2) / m.rho) : omega_from_nu(p.nu);
+  const float* u = m.u;
+  if (kForced) {
+    const float* F = force;
+    a2[0] += u[0] * F[0];
+    a2[1] += u[1] * F[1];
+    a2[2] += u[2] * F[2];
+    a2[3] += 0.5f * (u[0] * F[1] + u[1] * F[0]);
+    a2[4] += 0.5f * (u[0] * F[2] + u[2] * F[0]);
+    a2[5] += 0.5f * (u[1] * F[2] + u[2] * F[1]);
+  }
+  const float keep = 1.0f - omega;
+  const float a2t[3][3] = {{a2[0], a2[3], a2[4]}, {a2[3], a2[1], a2[5]}, {a2[4], a2[5], a2[2]}};
+  // t(a, b) = a3_aab of the post-collision populations: rho u_a^2 u_b + keep (2 u_a a2_ab + u_b a2_aa)
+  auto t = [&](int a, int b) { return m.rho * u[a] * u[a] * u[b] + keep * (2.0f * u[a] * a2t[a][b] + u[b] * a2t[a][a]); };
+  float plus[3], minus[3];  // per odd axis b: the coefficients 27/2 A+ and 27/6 A-
+  for (int b = 0; b < 3; ++b) {
+    const float t1 = t((b + 1) % 3, b), t2 = t((b + 2) % 3, b);
+    plus[b] = 13.5f * (t1 + t2);
+    minus[b] = 4.5f * (t1 - t2);
+  }
+  const float uF = u[0] * force[0] + u[1] * force[1] + u[2] * force[2];
+  const float uu = speed_squared(u);
+  const float trace = a2[0] + a2[1] + a2[2];
+  // rest direction: H2_0 : a2 = -tr(a2) / 3, no odd part
+  const float n0 = equilibrium_parts(0, m.rho, u, uu).even - keep * (4.5f / 3.0f) * d3q19::w(0) * trace;
+  g[0] = kForced ? n0 + guo_source_parts(0, u, force, uF, 0.5f).even : n0;
+  SHIP_LRM_UNROLL
+  for (int i = 1; i <= 9; ++i) {
+    const int o = d3q19::opp(i);
+    const int c[3] = {d3q19::cx(i), d3q19::cy(i), d3q19::cz(i)};
+    const EvenOddParts e = equilibrium_parts(i, m.rho, u, uu);
+    // H2_i : a2 = c.a2.c - tr(a2) / 3
+    float h2 = -trace / 3.0f;
+    add_times(h2, c[0] * c[0], a2[0]);
+    add_times(h2, c[1] * c[1], a2[1]);
+    add_times(h2, c[2] * c[2], a2[2]);
+    add_times(h2, 2 * c[0] * c[1], a2[3]);
+    add_times(h2, 2 * c[0] * c[2], a2[4]);
+    add_times(h2, 2 * c[1] * c[2], a2[5]);
+    float h3 = 0.0f;  // sum over b of P+ plus_b + P- minus_b (each c_b known at compile time)
+    for (int b = 0; b < 3; ++b) {
+      if (c[b] == 0) continue;
+      const int s1 = c[(b + 1) % 3] * c[(b + 1) % 3], s2 = c[(b + 2) % 3] * c[(b + 2) % 3];
+      const float term = (static_cast<float>(s1 + s2) - 2.0f / 3.0f) * plus[b] + static_cast<float>(s1 - s2) * minus[b];
+      h3 = c[b] > 0 ? h3 + term : h3 - term;
+    }
+    const float w = d3q19::w(i);
+    float even = e.even + keep * 4.5f * w * h2, odd = e.odd + w * h3;
+    if (kForced) {
+      const EvenOddParts s = guo_source_parts(i, u, force, uF, 0.5f);
+      even += s.even;
+      odd += s.odd;
+    }
+    g[i] = even + odd;
+    g[o] = even - odd;
+  }
+}
+
+// The collision of kind kCollision (collision_kind).
+template <int kCollision, bool kForced = true>
+SHIP_LRM_HD void collide(float g[Q], const Macro& m, const float force[3], const CollisionParams& p) {
+  constexpr bool kSmagorinsky = (kCollision & kSmagorinskyBit) != 0;
+  if constexpr ((kCollision & kRecursiveBit) != 0)
+    relax_recursive<kSmagorinsky, kForced>(g, m, force, p);
+  else
+    relax<kSmagorinsky, kForced>(g, m, force, p);
+}
 // With the model chosen at run time (cells off the vectorised bulk path).
-SHIP_LRM_HD void relax(float g[Q], const Macro& m, const float force[3], const CollisionParams& p) {
-  p.smagorinsky > 0.0f ? relax<true>(g, m, force, p) : relax<false>(g, m, force, p);
+SHIP_LRM_HD void collide(float g[Q], const Macro& m, const float force[3], const CollisionParams& p) {
+  with_collision_kind(p, [&](auto kind) { collide<decltype(kind)::value>(g, m, force, p); });
 }
 
 // ---- Open boundaries (thesis 6.1.3) ---------------------------------------------------------

@@ -385,7 +385,7 @@ SHIP_LRM_HD void store_aux(const LatticeView& v, std::size_t c, const Macro& m) 
 // the pre-collision state in aux (a support cell of the open boundaries; see update_boundary_state).
 // (x, y, z): the cell's position (cell_position; scalars, as an array in the caller's vectorised
 // loop would be a per-lane array GCC does not vectorise).
-template <bool kOdd, bool kSmagorinsky, int kForce, bool kStoreState = false>
+template <bool kOdd, int kCollision, int kForce, bool kStoreState = false>
 SHIP_LRM_HD void update_bulk_cell(const LatticeView& v, std::size_t c, float x, float y, float z, const std::int64_t* off) {
   const float p[3] = {x, y, z};
   float g[Q];
@@ -394,7 +394,7 @@ SHIP_LRM_HD void update_bulk_cell(const LatticeView& v, std::size_t c, float x, 
   float F[3];
   const Macro m = cell_state<kForce>(v, c, p, g, F);
   if (kStoreState) store_aux(v, c, m);
-  relax<kSmagorinsky, kForce != kNoForce>(g, m, F, v.params);
+  collide<kCollision, kForce != kNoForce>(g, m, F, v.params);
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) {
     if (kOdd)
@@ -436,13 +436,13 @@ SHIP_LRM_HD Macro segment_cell_state(const LatticeView& v, std::size_t c, float 
 
 // Update of one cell of a segment at position (x, y, z) (branch-free: the loop over a segment
 // vectorises).
-template <bool kSmagorinsky, int kForce, bool kStoreState = false>
+template <int kCollision, int kForce, bool kStoreState = false>
 SHIP_LRM_HD void update_segment_cell(const LatticeView& v, std::size_t c, float x, float y, float z, pop_t* const src[Q],
                                      pop_t* const dst[Q]) {
   float g[Q], F[3];
   const Macro m = segment_cell_state<kForce>(v, c, x, y, z, src, g, F);
   if (kStoreState) store_aux(v, c, m);
-  relax<kSmagorinsky, kForce != kNoForce>(g, m, F, v.params);
+  collide<kCollision, kForce != kNoForce>(g, m, F, v.params);
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) dst[i][c] = store_pop(g[i]);
 }
@@ -508,7 +508,7 @@ SHIP_LRM_HD void update_wall_cell(const LatticeView& v, std::size_t c, std::uint
   gather_cell<kOdd>(v, c, x, y, z, mask, g);
   const Macro m = cell_state(v, c, g, F);
   if (v.aux) store_aux(v, c, m);
-  relax(g, m, F, v.params);
+  collide(g, m, F, v.params);
   scatter_cell<kOdd>(v, c, x, y, z, mask, g);
 }
 
@@ -772,20 +772,20 @@ SHIP_LRM_HD void boundary_inputs(const LatticeView& v, int b, Macro& m, float S[
 
 // Post-collision populations g of an open-boundary cell rebuilt from boundary_inputs (no access to
 // the lattice's per-cell arrays, so that a loop over cells vectorises without gathers).
-template <bool kSmagorinsky, int kForce>
+template <int kCollision, int kForce>
 SHIP_LRM_HD void boundary_collide(const LatticeView& v, const Macro& m, const float S[6], const float F0[3], const float p[3], float g[Q]) {
   float F[3] = {F0[0], F0[1], F0[2]};
   reconstruct_fd(g, m.rho, m.u, S, omega_from_nu(v.params.nu));
-  relax<kSmagorinsky, kForce != kNoForce>(g, collision_state<kForce>(v, p, g, F), F, v.params);
+  collide<kCollision, kForce != kNoForce>(g, collision_state<kForce>(v, p, g, F), F, v.params);
 }
 
 // Pass 2 for one open-boundary cell b, with the model and force as template parameters.
-template <bool kOdd, bool kSmagorinsky, int kForce>
+template <bool kOdd, int kCollision, int kForce>
 SHIP_LRM_HD void update_boundary_cell(const LatticeView& v, int b) {
   Macro m;
   float S[6], F[3], p[3], g[Q];
   boundary_inputs<kForce>(v, b, m, S, F, p);
-  boundary_collide<kSmagorinsky, kForce>(v, m, S, F, p, g);
+  boundary_collide<kCollision, kForce>(v, m, S, F, p, g);
   scatter_boundary_cell<kOdd>(v, b, g);
 }
 

@@ -15,6 +15,8 @@ namespace ship_lrm::lbm {
 enum class Backend { Cpu, Cuda, Auto };
 Backend parse_backend(const std::string& s);  // "cpu", "cuda", "auto"; ConfigError otherwise
 const char* to_string(Backend b);
+CollisionModel parse_collision_model(const std::string& s);  // "bgk", "recursive"; ConfigError otherwise
+const char* to_string(CollisionModel m);
 bool cuda_available();  // compiled with CUDA and a device is present
 
 // Raised by the divergence guard: names the step and the first offending cell.

@@ -20,7 +20,8 @@ struct StreamStabilityCase {
   int size = 32;             // cells per edge of the periodic box
   float mach = 0.3f;         // stream speed U / c_s along x
   float nu = 1e-7f;          // lattice viscosity
-  float smagorinsky = 0.0f;  // Smagorinsky constant s (0: plain BGK)
+  float smagorinsky = 0.0f;  // Smagorinsky constant s (0: none)
+  CollisionModel collision = CollisionModel::Bgk;
   float amplitude = 1e-4f;   // perturbation, lattice velocity units
   enum class Seed { Random, ShearWave } seed = Seed::Random;
   unsigned random_seed = 1;  // Random: every velocity component uniform in +- amplitude

@@ -53,6 +53,7 @@ struct LrmConfig {
   double viscosity = 1.46072e-4;     // m^2/s (thesis table 6.4)
   double reference_velocity = 30.0;  // m/s mapped to 0.3 c_s (thesis table 6.4)
   double smagorinsky = 0.05;         // thesis 6.1 (LRM domain)
+  lbm::CollisionModel collision = lbm::CollisionModel::Bgk;  // lbm/cell_ops.hpp
   lbm::Backend backend = lbm::Backend::Auto;
   // Impedance faces: sigma of the partially non-reflecting outlet (lbm::FaceCondition::pressure_relaxation,
   // K = sigma (1 - Ma^2) c_s / L per step with L the domain edge in cells, Poinsot & Lele 1992); 0: the
