@@ -51,6 +51,7 @@ Solver::Solver(Lattice lattice) : lattice_(std::move(lattice)) {
     view_.face_inflow_reference[f] = cfg.faces[f].inflow_from_reference ? 1 : 0;
     view_.face_pressure_relaxation[f] = cfg.faces[f].pressure_relaxation;
     view_.face_total_pressure[f] = cfg.faces[f].total_pressure_inflow ? 1 : 0;
+    view_.face_characteristic[f] = cfg.faces[f].characteristic_inlet ? 1 : 0;
   }
   view_.params = cfg.collision;
   view_.nbnd = static_cast<int>(lattice_.boundary_cells().size());
@@ -179,7 +180,8 @@ void Solver::step(long n) {
 namespace {
 bool same_face(const FaceCondition& a, const FaceCondition& b) {
   return a.type == b.type && a.velocity == b.velocity && a.density == b.density && a.inflow_from_reference == b.inflow_from_reference &&
-         a.pressure_relaxation == b.pressure_relaxation && a.total_pressure_inflow == b.total_pressure_inflow;
+         a.pressure_relaxation == b.pressure_relaxation && a.total_pressure_inflow == b.total_pressure_inflow &&
+         a.characteristic_inlet == b.characteristic_inlet;
 }
 bool same_setup(const LatticeConfig& a, const LatticeConfig& b) {
   bool same = a.nx == b.nx && a.ny == b.ny && a.nz == b.nz && a.collision.nu == b.collision.nu &&

@@ -29,6 +29,13 @@ StreamStabilityResult run_stream_stability(const StreamStabilityCase& c) {
   cfg.collision.smagorinsky = c.smagorinsky;
   cfg.collision.model = c.collision;
   for (auto& f : cfg.faces) f.type = FaceType::Periodic;
+  const bool open = c.faces == StreamStabilityCase::Faces::InletOutlet;
+  if (open) {
+    cfg.faces[0].type = FaceType::VelocityInlet;
+    cfg.faces[0].velocity = {static_cast<float>(c.mach / std::sqrt(3.0)), 0.0f, 0.0f};
+    cfg.faces[0].characteristic_inlet = c.characteristic_inlet;
+    cfg.faces[1].type = FaceType::PressureOutlet;
+  }
   cfg.guard_interval = 16;
   auto solver = make_solver(Lattice(cfg), c.backend);
   const std::size_t cells = solver->lattice().cells();
@@ -43,6 +50,7 @@ StreamStabilityResult run_stream_stability(const StreamStabilityCase& c) {
       for (int x = 0; x < n; ++x) {
         float* v = &u[3 * solver->lattice().index(x, y, z)];
         v[0] = static_cast<float>(U);
+        if (open && (x == 0 || x == n - 1)) continue;  // the faces' cells hold the prescribed stream
         if (c.seed == StreamStabilityCase::Seed::ShearWave)
           v[0] += c.amplitude * static_cast<float>(wave[y]);
         else

@@ -24,6 +24,8 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
     float nu = 1.37e-7f;
     float smagorinsky = 0.05f;
     std::string collision = "bgk";
+    std::string faces = "periodic";
+    bool characteristic = false;
     int size = 32;
     long steps = 2000;
     float amplitude = 1e-4f;
@@ -42,6 +44,11 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
   cmd->add_option("--collision", o->collision, "bgk or recursive (recursive regularised, Coreixas et al. 2017)")
       ->check(CLI::IsMember({"bgk", "recursive"}))
       ->capture_default_str();
+  cmd->add_option("--faces", o->faces,
+                  "periodic (the collision alone) or inlet-outlet (velocity inlet at -x, pressure outlet at +x, y and z periodic)")
+      ->check(CLI::IsMember({"periodic", "inlet-outlet"}))
+      ->capture_default_str();
+  cmd->add_flag("--characteristic-inlet", o->characteristic, "inlet-outlet: a characteristic (non-reflecting) velocity inlet");
   cmd->add_option("--size", o->size, "cells per edge of the periodic box")->check(CLI::Range(4, 512))->capture_default_str();
   cmd->add_option("--steps", o->steps, "steps per case")->check(CLI::Range(1L, 100000000L))->capture_default_str();
   cmd->add_option("--amplitude", o->amplitude, "disturbance, lattice velocity units")->check(CLI::Range(1e-8, 1e-2))->capture_default_str();
@@ -67,6 +74,8 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
       c.nu = o->nu;
       c.smagorinsky = o->smagorinsky;
       c.collision = lbm::parse_collision_model(o->collision);
+      c.characteristic_inlet = o->characteristic;
+      c.faces = o->faces == "periodic" ? lbm::StreamStabilityCase::Faces::Periodic : lbm::StreamStabilityCase::Faces::InletOutlet;
       c.amplitude = o->amplitude;
       c.seed = o->seed == "shear" ? lbm::StreamStabilityCase::Seed::ShearWave : lbm::StreamStabilityCase::Seed::Random;
       c.steps = o->steps;

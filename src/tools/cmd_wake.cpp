@@ -34,6 +34,7 @@ std::function<int()> add_wake_command(CLI::App& app) {
   auto preset = std::make_shared<std::string>();
   auto backend = std::make_shared<std::string>("auto");
   auto mesh = std::make_shared<std::string>();
+  auto collision = std::make_shared<std::string>("bgk");
   auto flags = std::make_shared<std::array<bool, 4>>();  // overwrite, no-resume, float32, no-plot
   cmd->add_option("--preset", *preset,
                   "default (the approach scenario's table; cached under ~/.cache/ship_lrm when --out is not given) or tiny");
@@ -51,6 +52,12 @@ std::function<int()> add_wake_command(CLI::App& app) {
   cmd->add_option("--viscosity", opt->domain.viscosity, "kinematic viscosity, m^2/s (thesis tables 6.2, 6.3: 1.46072e-4)");
   cmd->add_option("--lattice-wind", opt->domain.lattice_wind,
                   "the wind in lattice units (default 0.045, Mach 0.078, the thesis' full-scale value; BGK is unstable from Mach 0.15)");
+  cmd->add_option("--collision", *collision,
+                  "bgk (the thesis') or recursive (recursive regularised, Coreixas et al. 2017: stable at the wake's tau to Mach 0.3)")
+      ->check(CLI::IsMember({"bgk", "recursive"}));
+  cmd->add_flag("--reflecting-inlet{false}", opt->domain.characteristic_inlet,
+                "the thesis' velocity inlet, which reflects the waves from the ship (default: a characteristic inlet that lets them "
+                "leave; with the reflecting one a disturbed stream grows, docs/design.md \"The noisy inlet\")");
   cmd->add_flag("--no-slip-sea", opt->domain.no_slip_sea, "no-slip sea surface (the thesis) instead of slip");
   cmd->add_option("--out", opt->out, "wake table FILE.h5 (FILE.xdmf, FILE_centre_plane.csv/.png beside it)");
   cmd->add_option("--checkpoint-every", opt->checkpoint_seconds, "wall-clock seconds between checkpoints (FILE.h5.ckpt)");
@@ -80,10 +87,12 @@ std::function<int()> add_wake_command(CLI::App& app) {
     if (o.out.empty()) throw CLI::ValidationError("--out", "give the table file (FILE.h5)");
     // BGK + Smagorinsky at the wake's relaxation time is unstable from about lattice Mach 0.15 and the
     // flow over the superstructure reaches 1.11 times the wind (docs/design.md, "The noisy inlet")
-    if (const double mach = 1.15 * o.domain.lattice_wind * std::sqrt(3.0); mach > 0.15)
+    o.domain.collision = lbm::parse_collision_model(*collision);
+    if (const double mach = 1.15 * o.domain.lattice_wind * std::sqrt(3.0); mach > 0.15 && o.domain.collision == lbm::CollisionModel::Bgk)
       std::fprintf(stderr,
                    "ship_lrm: warning: --lattice-wind %g puts the flow over the ship at lattice Mach %.2f, in BGK's unstable range (from "
-                   "about 0.15; `ship_lrm validate stream-stability`): expect noise growing from the inlet. The default 0.045 is stable\n",
+                   "about 0.15; `ship_lrm validate stream-stability`): expect noise growing from the inlet. The default 0.045 is stable, "
+                   "and so is --collision recursive\n",
                    o.domain.lattice_wind, mach);
     o.domain.density = o.scale == "model" ? 1.225 : 1.1934;  // thesis tables 6.2, 6.3
     o.domain.backend = lbm::parse_backend(*backend);

@@ -29,6 +29,8 @@ void LrmFaceOptions::add_to(CLI::App& cmd) {
                  "LRM's lattice Mach number 0.3, where BGK's stream grows noise)")
       ->check(CLI::IsMember({"bgk", "recursive"}))
       ->capture_default_str();
+  cmd.add_flag("--characteristic-inlets", characteristic_inlets,
+               "velocity faces let outgoing waves leave instead of reflecting them (non-reflecting inlets)");
 }
 
 void refuse_lrm_options(const CLI::App& cmd, std::initializer_list<const char*> others) {
@@ -36,7 +38,8 @@ void refuse_lrm_options(const CLI::App& cmd, std::initializer_list<const char*> 
     if (cmd.get_option(name)->count() > 0) throw CLI::ValidationError(name, "applies to the LRM only: add --inflow lrm");
   };
   for (const char* name : others) refuse(name);
-  for (const char* name : {"--faces", "--outlet-sigma", "--relaxed-faces", "--rotor-far-field", "--collision"}) refuse(name);
+  for (const char* name : {"--faces", "--outlet-sigma", "--relaxed-faces", "--rotor-far-field", "--collision", "--characteristic-inlets"})
+    refuse(name);
 }
 
 std::string LrmFaceOptions::label() const {
@@ -48,6 +51,7 @@ std::string LrmFaceOptions::label() const {
   }
   if (far_field) s << ";rotor-far-field";
   if (collision != "bgk") s << ";" << collision;
+  if (characteristic_inlets) s << ";characteristic-inlets";
   return s.str();
 }
 
@@ -56,6 +60,7 @@ void LrmFaceOptions::apply(lrm::LrmConfig& cfg) const {
   lrm::relax_faces(relaxed_faces, outlet_sigma, cfg);
   cfg.rotor_far_field = far_field;
   cfg.collision = lbm::parse_collision_model(collision);
+  cfg.characteristic_inlets = characteristic_inlets;
 }
 
 }  // namespace ship_lrm::tools

@@ -17,8 +17,9 @@ struct LrmFaceOptions {
   std::vector<std::string> relaxed_faces = {"back", "top", "bottom"};
   bool far_field = false;
   std::string collision = "bgk";
+  bool characteristic_inlets = false;
 
-  // --faces, --outlet-sigma, --relaxed-faces, --rotor-far-field, --collision
+  // --faces, --outlet-sigma, --relaxed-faces, --rotor-far-field, --collision, --characteristic-inlets
   void add_to(CLI::App& cmd);
   // The faces column of the CSVs: the set-up, the relaxed outlets when there are any, the far field.
   std::string label() const;

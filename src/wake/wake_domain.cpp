@@ -118,9 +118,11 @@ void ShipWakeDomain::rebuild(double t, bool carry) {
   lc.nz = nz_;
   lc.collision.nu = static_cast<float>(units_.lattice_viscosity());
   lc.collision.smagorinsky = static_cast<float>(cfg_.smagorinsky);
+  lc.collision.model = cfg_.collision;
   lc.faces[0].type = lbm::FaceType::PressureOutlet;  // outflow at the stern end (x = 0)
   lc.faces[1].type = lbm::FaceType::VelocityInlet;   // the wind from ahead
   lc.faces[1].velocity = {static_cast<float>(-cfg_.lattice_wind), 0.0f, 0.0f};
+  lc.faces[1].characteristic_inlet = cfg_.characteristic_inlet;
   lc.faces[2].type = lc.faces[3].type = lc.faces[4].type = lbm::FaceType::SlipWall;  // sides, top
   lc.faces[5].type = lbm::FaceType::Wall;                                            // below the sea
   lc.mach_guard = 0.9f;

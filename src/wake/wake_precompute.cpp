@@ -26,6 +26,8 @@ std::string signature(const PrecomputeOptions& o, const ShipWakeDomain& d) {
     << " wind=" << o.domain.wind << " lattice_wind=" << o.domain.lattice_wind << " smagorinsky=" << o.domain.smagorinsky
     << " grid=" << d.nx() << "x" << d.ny() << "x" << d.nz() << " interval=" << o.frame_interval << " stats=" << o.stats_interval
     << " half=" << o.half_precision;
+  if (o.domain.collision != lbm::CollisionModel::Bgk) s << " collision=" << lbm::to_string(o.domain.collision);
+  if (o.domain.characteristic_inlet) s << " inlet=characteristic";  // none: the reflecting inlet of the tables before session 35
   return s.str();
 }
 
@@ -184,9 +186,9 @@ std::vector<float> CentrePlaneStats::tke(int phase) const {
 }
 
 std::string default_table_path() {
-  if (const char* p = std::getenv("SHIP_LRM_WAKE_CACHE")) return std::string(p) + "/wake_default_v2.h5";
+  if (const char* p = std::getenv("SHIP_LRM_WAKE_CACHE")) return std::string(p) + "/wake_default_v3.h5";
   const char* home = std::getenv("HOME");
-  return std::string(home ? home : ".") + "/.cache/ship_lrm/wake_default_v2.h5";
+  return std::string(home ? home : ".") + "/.cache/ship_lrm/wake_default_v3.h5";
 }
 
 PrecomputeOptions preset(const std::string& name) {

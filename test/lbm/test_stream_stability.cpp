@@ -76,6 +76,45 @@ TEST(StreamStability, RecursiveRegularisedCollisionDampsWhatBgkGrowsAtMach03) {
   EXPECT_LT(rr.growth(), 0.5);
 }
 
+// A stream through a velocity inlet and a pressure outlet (y, z periodic) at the wake's lattice viscosity
+// and Smagorinsky constant, Mach 0.173 (the wake's lattice wind before session 34): with the thesis'
+// reflecting inlet a 1e-4 disturbance grows (x 900 in 8 000 steps in this 16^3 box, measured; either
+// collision), which is what made the wake's inlet noisy; the characteristic inlet lets it leave
+// (x 0.017). The periodic box at the same Mach number decays.
+TEST(StreamStability, CharacteristicInletLetsTheDisturbanceLeave) {
+  StreamStabilityCase c;
+  c.size = 16;
+  c.faces = StreamStabilityCase::Faces::InletOutlet;
+  c.mach = 0.173f;
+  c.nu = 2.39e-5f;
+  c.smagorinsky = 0.025f;
+  c.steps = 8000;
+  c.sample_interval = 2000;
+  const StreamStabilityResult reflecting = run_stream_stability(c);
+  c.characteristic_inlet = true;
+  const StreamStabilityResult characteristic = run_stream_stability(c);
+  ASSERT_FALSE(characteristic.diverged);
+  EXPECT_GT(reflecting.growth(), 10.0);
+  EXPECT_LT(characteristic.growth(), 0.2);
+}
+
+// OPEN DEFECT, the goal for a fix: the LRM's velocity faces are still the thesis' reflecting inlets
+// (the characteristic inlet did not remove the forward-flight ground corner's mode, session 35, so the
+// LRM keeps them). In a 32^3 box at the wake's default Mach 0.078 the reflecting inlet grows a
+// disturbance x 4.2 in 8 000 steps (measured). Enable when the reflecting inlet is stable.
+TEST(StreamStability, DISABLED_AStreamThroughAVelocityInletAndPressureOutletStaysQuiet) {
+  StreamStabilityCase c;
+  c.faces = StreamStabilityCase::Faces::InletOutlet;
+  c.mach = 0.078f;
+  c.nu = 2.39e-5f;
+  c.smagorinsky = 0.025f;
+  c.steps = 8000;
+  c.sample_interval = 2000;
+  const StreamStabilityResult r = run_stream_stability(c);
+  ASSERT_FALSE(r.diverged);
+  EXPECT_LT(r.growth(), 1.0);
+}
+
 TEST(StreamStability, RefusesBadInput) {
   StreamStabilityCase c;
   c.mach = 0.9f;

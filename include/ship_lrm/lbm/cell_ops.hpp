@@ -51,9 +51,9 @@ constexpr int kSmagorinskyBit = 1, kRecursiveBit = 2;
 SHIP_LRM_HD constexpr int collision_kind(const CollisionParams& p) {
   return (p.smagorinsky > 0.0f ? kSmagorinskyBit : 0) | (p.model == CollisionModel::RecursiveRegularized ? kRecursiveBit : 0);
 }
-// Calls f(std::integral_constant<int, kind>) with the kind of p (the run-time dispatch of the backends).
+// Calls f(std::integral_constant<int, kind>) with the kind of p (the backends' run-time dispatch; host only).
 template <class F>
-SHIP_LRM_HD void with_collision_kind(const CollisionParams& p, F&& f) {
+void with_collision_kind(const CollisionParams& p, F&& f) {
   switch (collision_kind(p)) {
     case 0:
       f(std::integral_constant<int, 0>());
@@ -340,7 +340,16 @@ SHIP_LRM_HD void collide(float g[Q], const Macro& m, const float force[3], const
 }
 // With the model chosen at run time (cells off the vectorised bulk path).
 SHIP_LRM_HD void collide(float g[Q], const Macro& m, const float force[3], const CollisionParams& p) {
-  with_collision_kind(p, [&](auto kind) { collide<decltype(kind)::value>(g, m, force, p); });
+  switch (collision_kind(p)) {
+    case 0:
+      return collide<0>(g, m, force, p);
+    case 1:
+      return collide<1>(g, m, force, p);
+    case 2:
+      return collide<2>(g, m, force, p);
+    default:
+      return collide<3>(g, m, force, p);
+  }
 }
 
 // ---- Open boundaries (thesis 6.1.3) ---------------------------------------------------------

@@ -46,6 +46,14 @@ struct FaceCondition {
   // pressureInletOutletVelocity). Unlike a fixed pressure on every face it pins the frame: a uniform
   // drift through the domain would enter below the pressure at which it leaves, so it decays.
   bool total_pressure_inflow = false;
+  // VelocityInlet: a characteristic (non-reflecting) inlet. The velocity prescribes the wave that
+  // enters; the acoustic wave that leaves through the face passes, its outward normal velocity
+  // c_s (rho - 1) / rho added to the prescribed one (p' = rho c_s u' for a wave moving outward;
+  // Thompson 1987, J. Comput. Phys. 68, 1; for LBM Izquierdo & Fueyo 2008, Phys. Rev. E 78, 046707).
+  // The plain inlet reflects that wave, and with an outlet opposite it a disturbed stream grows
+  // (`validate stream-stability --faces inlet-outlet`). The mean inflow then follows the pressure at
+  // the face: lower by c_s (rho - 1) where the flow raises it.
+  bool characteristic_inlet = false;
 };
 
 struct LatticeConfig {

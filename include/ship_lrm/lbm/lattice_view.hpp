@@ -35,6 +35,7 @@ struct LatticeView {
   std::uint8_t face_inflow_reference[6] = {0, 0, 0, 0, 0, 0};  // FaceCondition::inflow_from_reference
   float face_pressure_relaxation[6] = {};                      // FaceCondition::pressure_relaxation
   std::uint8_t face_total_pressure[6] = {0, 0, 0, 0, 0, 0};    // FaceCondition::total_pressure_inflow
+  std::uint8_t face_characteristic[6] = {0, 0, 0, 0, 0, 0};    // FaceCondition::characteristic_inlet
   const WallMotion* walls = nullptr;
   CollisionParams params;
   // Open boundary cells (thesis 6.1.3), numbered b = 0 .. nbnd-1.
@@ -524,7 +525,14 @@ SHIP_LRM_HD Macro boundary_macro(const LatticeView& v, int b, const float g[Q], 
   Macro m;
   if (t == CellType::VelocityInlet) {
     for (int a = 0; a < 3; ++a) m.u[a] = v.bnd_value[4 * b + a];
-    m.rho = K / (1.0f + sgn * m.u[axis]);
+    if (v.face_characteristic[v.bnd_normal[b]]) {
+      // K = rho (1 + u_out) with u_out = sgn u_n + c_s (rho - 1) / rho (FaceCondition::characteristic_inlet)
+      const float cs = 0.57735026919f;
+      m.rho = (K + cs) / (1.0f + sgn * m.u[axis] + cs);
+      m.u[axis] += sgn * cs * (m.rho - 1.0f) / m.rho;
+    } else {
+      m.rho = K / (1.0f + sgn * m.u[axis]);
+    }
     return m;
   }
   if (t == CellType::PressureOutlet) {

@@ -22,7 +22,11 @@ struct StreamStabilityCase {
   float nu = 1e-7f;          // lattice viscosity
   float smagorinsky = 0.0f;  // Smagorinsky constant s (0: none)
   CollisionModel collision = CollisionModel::Bgk;
-  float amplitude = 1e-4f;   // perturbation, lattice velocity units
+  // Periodic: a periodic box (the collision alone). InletOutlet: x has a velocity inlet (U at -x) and a
+  // pressure outlet (+x), y and z stay periodic: the open faces with the stream through them.
+  enum class Faces { Periodic, InletOutlet } faces = Faces::Periodic;
+  bool characteristic_inlet = false;  // InletOutlet: FaceCondition::characteristic_inlet
+  float amplitude = 1e-4f;            // perturbation, lattice velocity units
   enum class Seed { Random, ShearWave } seed = Seed::Random;
   unsigned random_seed = 1;  // Random: every velocity component uniform in +- amplitude
   long steps = 2000;

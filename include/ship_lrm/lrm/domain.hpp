@@ -46,14 +46,16 @@ using rotor::Vec3;
 using Mat3 = Eigen::Matrix3d;
 
 struct LrmConfig {
-  int nodes = 64;                    // N: lattice nodes across 4R (thesis 6.4)
-  double reach = 1.25;               // a >= 1: domain edge / 4R
-  double radius = 4.92;              // m (thesis' LRM tables)
-  double density = 1.1934;           // kg/m^3 (thesis table 6.4)
-  double viscosity = 1.46072e-4;     // m^2/s (thesis table 6.4)
-  double reference_velocity = 30.0;  // m/s mapped to 0.3 c_s (thesis table 6.4)
-  double smagorinsky = 0.05;         // thesis 6.1 (LRM domain)
+  int nodes = 64;                                            // N: lattice nodes across 4R (thesis 6.4)
+  double reach = 1.25;                                       // a >= 1: domain edge / 4R
+  double radius = 4.92;                                      // m (thesis' LRM tables)
+  double density = 1.1934;                                   // kg/m^3 (thesis table 6.4)
+  double viscosity = 1.46072e-4;                             // m^2/s (thesis table 6.4)
+  double reference_velocity = 30.0;                          // m/s mapped to 0.3 c_s (thesis table 6.4)
+  double smagorinsky = 0.05;                                 // thesis 6.1 (LRM domain)
   lbm::CollisionModel collision = lbm::CollisionModel::Bgk;  // lbm/cell_ops.hpp
+  // Velocity faces as characteristic inlets (lbm::FaceCondition::characteristic_inlet)
+  bool characteristic_inlets = false;
   lbm::Backend backend = lbm::Backend::Auto;
   // Impedance faces: sigma of the partially non-reflecting outlet (lbm::FaceCondition::pressure_relaxation,
   // K = sigma (1 - Ma^2) c_s / L per step with L the domain edge in cells, Poinsot & Lele 1992); 0: the

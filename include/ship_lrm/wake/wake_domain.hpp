@@ -35,6 +35,12 @@ struct WakeConfig {
   double viscosity = 1.46072e-4;  // m^2/s (thesis tables 6.2, 6.3)
   double density = 1.1934;        // kg/m^3 (1.225 for the model, table 6.2)
   double smagorinsky = 0.025;     // thesis 6.2
+  // BGK (the thesis') or the recursive regularised collision, stable at the wake's tau to Mach 0.3
+  lbm::CollisionModel collision = lbm::CollisionModel::Bgk;
+  // The wind's face as a characteristic inlet (lbm::FaceCondition::characteristic_inlet): waves from
+  // the ship leave through it instead of being reflected. The thesis' reflecting inlet with the outlet
+  // opposite lets a disturbed stream grow (docs/design.md, "The noisy inlet", session 35).
+  bool characteristic_inlet = true;
   lbm::Backend backend = lbm::Backend::Auto;
   // domain, in ship lengths (thesis 6.2)
   double domain_length = 4.0, domain_width = 1.5, domain_height = 0.88;

@@ -70,8 +70,8 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt);
 // wind and ship motion, N = 48, 30 s of frames every 0.1 s; a few minutes on 2 cores) and "tiny" (a
 // small table for tests, seconds). ConfigError for other names.
 PrecomputeOptions preset(const std::string& name);
-// Where the "default" preset's table is cached: $SHIP_LRM_WAKE_CACHE/wake_default_v2.h5, else
-// ~/.cache/ship_lrm/wake_default_v2.h5 (made by `ship_lrm wake --preset default`).
+// Where the "default" preset's table is cached: $SHIP_LRM_WAKE_CACHE/wake_default_v3.h5, else
+// ~/.cache/ship_lrm/wake_default_v3.h5 (made by `ship_lrm wake --preset default`).
 std::string default_table_path();
 
 }  // namespace ship_lrm::wake
