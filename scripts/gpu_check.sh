@@ -96,6 +96,10 @@ if [ "$full" = 1 ]; then
   # the collision's stability in a disturbed stream on the device (the same table as the CPU's: the
   # backends are bit-identical; docs/benchmarks.md, "Stream stability of the collision")
   step stream_stability 300 "$bench" validate stream-stability --backend cuda --mach 0.15,0.225,0.3
+  # the recursive regularised collision and the characteristic inlet on the device (session 35)
+  step stream_stability_rr 300 "$bench" validate stream-stability --backend cuda --mach 0.3 --collision recursive
+  step inlet_outlet 300 "$bench" validate stream-stability --backend cuda --faces inlet-outlet --characteristic-inlet \
+    --mach 0.078,0.173 --steps 8000 --smagorinsky 0.025 --nu 2.39e-5
 else
   echo "(step 4, the full tests and the other benchmarks, skipped: FULL=1 runs them)" | tee -a "$summary"
 fi

@@ -15,11 +15,13 @@ using namespace ship_lrm::lbm::test;
 
 namespace {
 
-Lattice every_boundary_case() {
+Lattice every_boundary_case(CollisionModel model = CollisionModel::Bgk, bool characteristic_inlet = false) {
   LatticeConfig cfg = periodic_config(40, 24, 20, 0.02f);
   cfg.collision.smagorinsky = 0.05f;
+  cfg.collision.model = model;
   cfg.faces[0].type = FaceType::VelocityInlet;
   cfg.faces[0].velocity = {0.05f, 0.0f, 0.01f};
+  cfg.faces[0].characteristic_inlet = characteristic_inlet;
   cfg.faces[1].type = FaceType::PressureOutlet;
   cfg.faces[2].type = FaceType::SlipWall;
   cfg.faces[3].type = FaceType::ImpedanceOutlet;
@@ -120,12 +122,23 @@ TEST(CudaBackend, MatchesCpuInAnAcceleratingRotatingFrame) {
 
 // The same case runs on the CPU (always): it must stay finite and conserve what it should not
 // lose through walls. This keeps the every-boundary set-up exercised where no GPU exists.
+// The recursive regularised collision (cell_ops.hpp) and the characteristic inlet on the device.
+TEST(CudaBackend, MatchesCpuWithTheRecursiveCollisionAndACharacteristicInlet) {
+  if (!cuda_available()) GTEST_SKIP() << "no CUDA device: run scripts/gpu_check.sh on a GPU machine";
+  auto cpu = make_cpu_solver(every_boundary_case(CollisionModel::RecursiveRegularized, true));
+  auto gpu = make_cuda_solver(every_boundary_case(CollisionModel::RecursiveRegularized, true));
+  compare(*cpu, *gpu, 1, 1e-6);
+  compare(*cpu, *gpu, 99, 1e-5);
+}
+
 TEST(CudaBackend, EveryBoundaryCaseRunsOnCpu) {
-  auto cpu = make_cpu_solver(every_boundary_case());
-  cpu->step(400);
-  cpu->check_divergence();
-  const Fields f = cpu->fields();
-  for (float r : f.rho) ASSERT_TRUE(std::isfinite(r));
+  for (const CollisionModel model : {CollisionModel::Bgk, CollisionModel::RecursiveRegularized}) {
+    auto cpu = make_cpu_solver(every_boundary_case(model, model == CollisionModel::RecursiveRegularized));
+    cpu->step(400);
+    cpu->check_divergence();
+    const Fields f = cpu->fields();
+    for (float r : f.rho) ASSERT_TRUE(std::isfinite(r));
+  }
 }
 
 // The CPU's fields() reads the bulk segments through their streaming addresses, and every other
