@@ -219,7 +219,7 @@ def main():
                 if not sel.any() or hi <= lo:
                     continue
                 x = delta[c][sel]
-                w.writerow([c, f"{d[c][k0]:.6g}", name, f"{lo:g}", f"{min(hi, t[-1]):g}", f"{x.mean():.4g}", f"{x.std():.4g}",
+                w.writerow([c, f"{d[c][k0]:.9g}", name, f"{lo:g}", f"{min(hi, t[-1]):g}", f"{x.mean():.4g}", f"{x.std():.4g}",
                             f"{x.min():.4g}", f"{x.max():.4g}", f"{wav[0]:.4g}", f"{wav[1]:.4g}"])
     names = ["approach.png", "approach_wavelets.png", "approach_summary.csv"] + (["approach_loads.csv"] if is_bag else [])
     print("wrote", ", ".join(os.path.join(a.out, n) for n in names))
