@@ -28,18 +28,18 @@ StreamStabilityResult run_stream_stability(const StreamStabilityCase& c) {
   cfg.collision.nu = c.nu;
   cfg.collision.smagorinsky = c.smagorinsky;
   cfg.collision.model = c.collision;
+  const double U = c.mach / std::sqrt(3.0);
   for (auto& f : cfg.faces) f.type = FaceType::Periodic;
   const bool open = c.faces == StreamStabilityCase::Faces::InletOutlet;
   if (open) {
     cfg.faces[0].type = FaceType::VelocityInlet;
-    cfg.faces[0].velocity = {static_cast<float>(c.mach / std::sqrt(3.0)), 0.0f, 0.0f};
+    cfg.faces[0].velocity = {static_cast<float>(U), 0.0f, 0.0f};
     cfg.faces[0].characteristic_inlet = c.characteristic_inlet;
     cfg.faces[1].type = FaceType::PressureOutlet;
   }
   cfg.guard_interval = 16;
   auto solver = make_solver(Lattice(cfg), c.backend);
   const std::size_t cells = solver->lattice().cells();
-  const double U = c.mach / std::sqrt(3.0);
   std::vector<double> wave(n);  // sin(k y), k = 2 pi / n: the shear wave's profile
   for (int y = 0; y < n; ++y) wave[y] = std::sin(2.0 * M_PI * y / n);
   std::vector<float> rho(cells, 1.0f), u(3 * cells, 0.0f);

@@ -85,15 +85,18 @@ std::function<int()> add_wake_command(CLI::App& app) {
       if (o.out.empty() && *preset == "default") o.out = wake::default_table_path();
     }
     if (o.out.empty()) throw CLI::ValidationError("--out", "give the table file (FILE.h5)");
-    // BGK + Smagorinsky at the wake's relaxation time is unstable from about lattice Mach 0.15 and the
-    // flow over the superstructure reaches 1.11 times the wind (docs/design.md, "The noisy inlet")
     o.domain.collision = lbm::parse_collision_model(*collision);
-    if (const double mach = 1.15 * o.domain.lattice_wind * std::sqrt(3.0); mach > 0.15 && o.domain.collision == lbm::CollisionModel::Bgk)
+    // The flow over the superstructure reaches 1.11 times the wind; a faster lattice wind costs accuracy
+    // (compressibility) and, with BGK, stability (docs/design.md, "The noisy inlet"; benchmarks, session 35)
+    if (const double mach = 1.15 * o.domain.lattice_wind * std::sqrt(3.0); mach > 0.15)
       std::fprintf(stderr,
-                   "ship_lrm: warning: --lattice-wind %g puts the flow over the ship at lattice Mach %.2f, in BGK's unstable range (from "
-                   "about 0.15; `ship_lrm validate stream-stability`): expect noise growing from the inlet. The default 0.045 is stable, "
-                   "and so is --collision recursive\n",
-                   o.domain.lattice_wind, mach);
+                   "ship_lrm: warning: --lattice-wind %g puts the flow over the ship at lattice Mach %.2f: the mean flow moves by about "
+                   "Mach^2 (3 %% of the wind at 0.1 against the default 0.045)%s\n",
+                   o.domain.lattice_wind, mach,
+                   o.domain.collision == lbm::CollisionModel::Bgk
+                       ? ", and BGK's stream is unstable from about Mach 0.15 (`ship_lrm validate stream-stability`; --collision "
+                         "recursive is not)"
+                       : "");
     o.domain.density = o.scale == "model" ? 1.225 : 1.1934;  // thesis tables 6.2, 6.3
     o.domain.backend = lbm::parse_backend(*backend);
     if ((*flags)[2]) o.half_precision = false;

@@ -412,12 +412,20 @@ SHIP_LRM_HD void reconstruct_fd(float g[Q], float rho, const float u[3], const f
 // rho_prev: the previous density, or, for a partially non-reflecting outlet, that density moved
 // towards the reference by the relaxation (FaceCondition::pressure_relaxation).
 SHIP_LRM_HD float impedance_density(float K, float rho_prev, float un_prev) {
-  const float cs = 0.57735026919f;
+  const float cs = d3q19::cs;
   const float a = 1.0f + un_prev;
   const float A = d3q19::cs2 + 0.5f * a * a + cs * a;
   const float B = d3q19::cs2 * rho_prev + K * a + cs * K;  // minus the linear coefficient
   const float disc = B * B - 2.0f * A * K * K;
   return (B + sqrtf(disc > 0.0f ? disc : 0.0f)) / (2.0f * A);
 }
+
+// Characteristic (non-reflecting) velocity inlet (FaceCondition::characteristic_inlet; Thompson 1987,
+// J. Comput. Phys. 68, 1; for LBM Izquierdo & Fueyo 2008, Phys. Rev. E 78, 046707): the prescribed
+// outward normal velocity un fixes the wave that enters, and the acoustic wave that leaves passes with
+// p' = rho c_s u', so the outward normal velocity is un + c_s (rho - 1) / rho. With the Zou-He relation
+// K = rho (1 + that velocity), rho = (K + c_s) / (1 + un + c_s). Returns rho; the cell's outward normal
+// velocity gets c_s (rho - 1) / rho added.
+SHIP_LRM_HD float characteristic_inlet_density(float K, float un) { return (K + d3q19::cs) / (1.0f + un + d3q19::cs); }
 
 }  // namespace ship_lrm::lbm

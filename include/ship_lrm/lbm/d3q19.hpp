@@ -8,7 +8,8 @@
 namespace ship_lrm::lbm::d3q19 {
 
 constexpr int Q = 19;
-constexpr float cs2 = 1.0f / 3.0f;  // lattice speed of sound squared, c_s = 1/sqrt(3)
+constexpr float cs2 = 1.0f / 3.0f;    // lattice speed of sound squared
+constexpr float cs = 0.57735026919f;  // c_s = 1/sqrt(3)
 
 SHIP_LRM_HD constexpr int cx(int i) {
   constexpr int t[Q] = {0, -1, 0, 0, -1, -1, -1, -1, 0, 0, 1, 0, 0, 1, 1, 1, 1, 0, 0};

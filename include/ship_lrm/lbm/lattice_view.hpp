@@ -526,10 +526,8 @@ SHIP_LRM_HD Macro boundary_macro(const LatticeView& v, int b, const float g[Q], 
   if (t == CellType::VelocityInlet) {
     for (int a = 0; a < 3; ++a) m.u[a] = v.bnd_value[4 * b + a];
     if (v.face_characteristic[v.bnd_normal[b]]) {
-      // K = rho (1 + u_out) with u_out = sgn u_n + c_s (rho - 1) / rho (FaceCondition::characteristic_inlet)
-      const float cs = 0.57735026919f;
-      m.rho = (K + cs) / (1.0f + sgn * m.u[axis] + cs);
-      m.u[axis] += sgn * cs * (m.rho - 1.0f) / m.rho;
+      m.rho = characteristic_inlet_density(K, sgn * m.u[axis]);
+      m.u[axis] += sgn * d3q19::cs * (m.rho - 1.0f) / m.rho;
     } else {
       m.rho = K / (1.0f + sgn * m.u[axis]);
     }
