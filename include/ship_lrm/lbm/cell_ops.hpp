@@ -425,7 +425,8 @@ SHIP_LRM_HD float impedance_density(float K, float rho_prev, float un_prev) {
 // outward normal velocity un fixes the wave that enters, and the acoustic wave that leaves passes with
 // p' = rho c_s u', so the outward normal velocity is un + c_s (rho - 1) / rho. With the Zou-He relation
 // K = rho (1 + that velocity), rho = (K + c_s) / (1 + un + c_s). Returns rho; the cell's outward normal
-// velocity gets c_s (rho - 1) / rho added.
+// velocity is then characteristic_inlet_velocity(un, rho).
 SHIP_LRM_HD float characteristic_inlet_density(float K, float un) { return (K + d3q19::cs) / (1.0f + un + d3q19::cs); }
+SHIP_LRM_HD float characteristic_inlet_velocity(float un, float rho) { return un + d3q19::cs * (rho - 1.0f) / rho; }
 
 }  // namespace ship_lrm::lbm

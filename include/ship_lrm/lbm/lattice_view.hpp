@@ -527,7 +527,7 @@ SHIP_LRM_HD Macro boundary_macro(const LatticeView& v, int b, const float g[Q], 
     for (int a = 0; a < 3; ++a) m.u[a] = v.bnd_value[4 * b + a];
     if (v.face_characteristic[v.bnd_normal[b]]) {
       m.rho = characteristic_inlet_density(K, sgn * m.u[axis]);
-      m.u[axis] += sgn * d3q19::cs * (m.rho - 1.0f) / m.rho;
+      m.u[axis] = sgn * characteristic_inlet_velocity(sgn * m.u[axis], m.rho);
     } else {
       m.rho = K / (1.0f + sgn * m.u[axis]);
     }
@@ -707,6 +707,8 @@ SHIP_LRM_HD void update_boundary_state(const LatticeView& v, int b) {
     if (t != CellType::PressureOutlet) m.rho = mi.rho;
     if (t != CellType::VelocityInlet)
       for (int a = 0; a < 3; ++a) m.u[a] = 2.0f * mi.u[a] - mi2.u[a];
+    else if (v.face_characteristic[v.bnd_normal[b]])  // the outgoing wave with this density, not boundary_macro's from the mixed sums
+      m.u[axis] = sgn * characteristic_inlet_velocity(sgn * v.bnd_value[4 * b + axis], m.rho);
   } else if (t == CellType::ImpedanceOutlet && support_cell(v, x, y, z, axis, -sgn, in)) {
     // Tangential velocity extrapolated linearly from the two interior neighbours along the normal
     // (zero second derivative): the Zou-He estimate from the known populations is biased by the
