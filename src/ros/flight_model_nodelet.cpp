@@ -20,6 +20,7 @@
 #include <nav_msgs/Odometry.h>
 #include <nodelet/nodelet.h>
 #include <rosgraph_msgs/Clock.h>
+#include <std_msgs/String.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
@@ -69,6 +70,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
       pnh.param("tf_interval", tf_interval_, 0.02);
       pnh.param("clock_offset", clock_offset_, 1.0);
       pnh.param("wait_for_loads_subscribers", wait_for_subscribers_, 0);
+      pnh.param("wait_for_recorder", wait_for_recorder_, false);
       std::string mode;
       pnh.param<std::string>("realtime_mode", mode, "lockstep");
       if (mode != "lockstep" && mode != "pipelined")
@@ -96,6 +98,8 @@ class FlightModelNodelet : public nodelet::Nodelet {
     trim_pub_ = nh.advertise<ship_lrm::PilotControls>("pilot/trim", 1, true);
     pilot_ = nh.subscribe("pilot/controls", 4, &FlightModelNodelet::on_pilot, this, ros::TransportHints().tcpNoDelay());
     trim_service_ = nh.advertiseService("trim", &FlightModelNodelet::on_trim, this);
+    if (wait_for_recorder_)  // `rosbag record --publish` says begin_write once it has opened the bag and spins
+      begin_write_ = nh.subscribe("begin_write", 1, &FlightModelNodelet::on_begin_write, this);
     diagnostics_.setHardwareID("ship_lrm flight model");
     diagnostics_.add("flight model", this, &FlightModelNodelet::diagnose);
     if (cfg_.inflow == "lrm") link_ = std::make_shared<RosInflowLink>(nh, lrm_timeout_);
@@ -103,6 +107,8 @@ class FlightModelNodelet : public nodelet::Nodelet {
   }
 
   ros::Time stamp(double t) const { return ros::Time(epoch_ + t); }
+
+  void on_begin_write(const std_msgs::String::ConstPtr&) { recorder_ready_ = true; }
 
   void on_pilot(const ship_lrm::PilotControls::ConstPtr& m) {
     flight::PilotControls c;
@@ -177,14 +183,27 @@ class FlightModelNodelet : public nodelet::Nodelet {
   void run() {
     epoch_ = realtime_ ? ros::WallTime::now().toSec() : clock_offset_;  // refined at the start in real time
     if (!realtime_) publish_clock(0.0);
-    // a recorder (rosbag) or a test that must see every load subscribes before the first step
+    // A recorder (rosbag) or a test that must see every load subscribes before the first step. Being
+    // subscribed is not enough for rosbag record: it spins its callbacks only after its clock is valid
+    // and its bag open, and until then keeps only the newest 100 messages of a topic, so a fast
+    // simulated-time run lost its first load. It says begin_write (--publish) when it spins; until
+    // then the clock of t = 0 goes out again, so that a recorder that connected late has a valid time.
     const auto wait_until = std::chrono::steady_clock::now() + std::chrono::duration<double>(connect_timeout_);
-    while (!stop_ && ros::ok() && static_cast<int>(loads_.getNumSubscribers()) < wait_for_subscribers_ &&
-           std::chrono::steady_clock::now() < wait_until)
+    const auto waiting = [this] {
+      return static_cast<int>(loads_.getNumSubscribers()) < wait_for_subscribers_ || (wait_for_recorder_ && !recorder_ready_);
+    };
+    while (!stop_ && ros::ok() && waiting() && std::chrono::steady_clock::now() < wait_until) {
+      if (!realtime_) publish_clock(0.0);
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
     if (static_cast<int>(loads_.getNumSubscribers()) < wait_for_subscribers_)
       NODELET_WARN("FlightModel: only %u of %d subscribers on rotor/loads after %g s; starting", loads_.getNumSubscribers(),
                    wait_for_subscribers_, connect_timeout_);
+    if (wait_for_recorder_ && !recorder_ready_)
+      NODELET_WARN("FlightModel: no begin_write from the recorder (rosbag record --publish) after %g s; starting, the bag may miss "
+                   "the first loads",
+                   connect_timeout_);
+    begin_write_.shutdown();
     if (link_ && !link_->wait_for_solver(connect_timeout_)) {
       NODELET_ERROR("FlightModel: no LRM solver on %s within %g s; flying on Pitt-Peters",
                     getNodeHandle().resolveName("rotor/forces").c_str(), connect_timeout_);
@@ -462,6 +481,9 @@ class FlightModelNodelet : public nodelet::Nodelet {
   double next_output_ = 0, next_tf_ = 0, step_wall_s_ = 0;
   long steps_ = 0;
   int wait_for_subscribers_ = 0;
+  bool wait_for_recorder_ = false;
+  std::atomic<bool> recorder_ready_{false};
+  ros::Subscriber begin_write_;
   std::shared_ptr<RosInflowLink> link_;
   std::unique_ptr<lrm::ShipApproach> approach_;
   ros::Publisher clock_, loads_, wrench_, odom_, status_, epoch_pub_, trim_pub_, markers_;
