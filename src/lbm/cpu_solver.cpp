@@ -104,6 +104,9 @@ class CpuSolver final : public Solver {
     view_.bnd_grad_weight = lattice_.boundary_gradient_weights().data();
     view_.held_cell = lattice_.held_cells().data();
     view_.held_wall = lattice_.held_walls().data();
+    view_.absorbing_cell = lattice_.absorbing_cells().data();
+    view_.absorbing_target = lattice_.absorbing_targets().data();
+    view_.absorbing_sigma = lattice_.absorbing_sigmas().data();
   }
 
   void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) override {
@@ -316,7 +319,7 @@ class CpuSolver final : public Solver {
   }
 
   // The passes of a step (see update_boundary_state in lattice_view.hpp), then the held cells
-  // (hold_cell), in one parallel region. Each loop is a TeamLoop (team_loop.hpp): a static share per
+  // (hold_cell) and the absorbing layers' cells (absorb_cell), in one parallel region. Each loop is a TeamLoop (team_loop.hpp): a static share per
   // thread that the others finish when it is held up.
   template <bool kOdd, int kCollision, int kForce>
   void run_step() {
@@ -333,6 +336,7 @@ class CpuSolver final : public Solver {
     loops_[2].reset(v.nbnd, threads, kBoundaryChunk);
     loops_[3].reset(nblocks, threads, kBlockChunk);
     loops_[4].reset(v.nheld, threads, kHeldChunk);
+    loops_[5].reset(v.nabsorbing, threads, kHeldChunk);
 #pragma omp parallel
     {
       const int t = omp_get_thread_num();
@@ -353,6 +357,11 @@ class CpuSolver final : public Solver {
 #pragma omp barrier
         // every cell has emitted this step's populations
         loops_[4].run(t, [&](long h) { hold_cell<kOdd>(v, static_cast<int>(h)); });
+      }
+      if (v.nabsorbing) {
+#pragma omp barrier
+        // every cell has emitted this step's populations (the lists of held and absorbing cells are disjoint)
+        loops_[5].run(t, [&](long a) { absorb_cell<kOdd>(v, static_cast<int>(a)); });
       }
     }
   }
@@ -524,10 +533,10 @@ class CpuSolver final : public Solver {
 #else
   static constexpr std::size_t kLanes = 8;
 #endif
-  // run_step's loops (segments, general cells, boundary states, boundary blocks, held cells) and their
+  // run_step's loops (segments, general cells, boundary states, boundary blocks, held cells, absorbing cells) and their
   // chunks (a few dozen per thread's share at N = 32)
   static constexpr long kSegmentChunk = 16, kGeneralChunk = 32, kBoundaryChunk = 128, kBlockChunk = 2, kHeldChunk = 32;
-  TeamLoop loops_[5];
+  TeamLoop loops_[6];
 };
 
 }  // namespace

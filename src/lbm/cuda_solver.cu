@@ -144,6 +144,13 @@ __global__ void hold_kernel(LatticeView v) {
   if (h < v.nheld) hold_cell<kOddDone>(v, h);
 }
 
+// The absorbing layers' cells after a step (absorb_cell in lattice_view.hpp).
+template <bool kOddDone>
+__global__ void absorb_kernel(LatticeView v) {
+  const int a = blockIdx.x * blockDim.x + threadIdx.x;
+  if (a < v.nabsorbing) absorb_cell<kOddDone>(v, a);
+}
+
 __global__ void init_boundary_kernel(LatticeView v) {
   const int b = blockIdx.x * blockDim.x + threadIdx.x;
   if (b >= v.nbnd) return;
@@ -227,6 +234,9 @@ class CudaSolver final : public Solver {
     bnd_grad_weight_.upload(lattice_.boundary_gradient_weights());
     held_cell_.upload(lattice_.held_cells());
     held_wall_.upload(lattice_.held_walls());
+    absorbing_cell_.upload(lattice_.absorbing_cells());
+    absorbing_target_.upload(lattice_.absorbing_targets());
+    absorbing_sigma_.upload(lattice_.absorbing_sigmas());
     row_offsets_.upload(lattice_.row_offsets());
     link_mask_.upload(full_link_masks(lattice_));
     if (!lattice_.boundary_cells().empty()) aux_.resize(4 * n);
@@ -380,6 +390,9 @@ class CudaSolver final : public Solver {
     view_.bnd_grad_weight = bnd_grad_weight_.data();
     view_.held_cell = held_cell_.data();
     view_.held_wall = held_wall_.data();
+    view_.absorbing_cell = absorbing_cell_.data();
+    view_.absorbing_target = absorbing_target_.data();
+    view_.absorbing_sigma = absorbing_sigma_.data();
   }
 
   void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) override {
@@ -430,6 +443,14 @@ class CudaSolver final : public Solver {
         hold_kernel<false><<<nb, kBlock>>>(view_);
       check(cudaGetLastError(), "hold launch");
     }
+    if (view_.nabsorbing) {  // the absorbing layers' cells (absorb_cell; disjoint from the held cells)
+      const unsigned nb = blocks(static_cast<std::size_t>(view_.nabsorbing));
+      if (odd)
+        absorb_kernel<true><<<nb, kBlock>>>(view_);
+      else
+        absorb_kernel<false><<<nb, kBlock>>>(view_);
+      check(cudaGetLastError(), "absorb launch");
+    }
   }
 
   void do_fields(bool next_odd, Fields& out) override {
@@ -475,6 +496,8 @@ class CudaSolver final : public Solver {
   DeviceArray<std::uint32_t> bnd_cell_, bnd_mask_, bnd_grad_cell_, held_cell_;
   DeviceArray<float> bnd_value_, force_, aux_, bnd_grad_weight_;
   DeviceArray<std::int64_t> row_offsets_;
+  DeviceArray<std::uint32_t> absorbing_cell_, absorbing_target_;  // Lattice::absorbing_cells, absorbing_targets
+  DeviceArray<float> absorbing_sigma_;
   DeviceArray<std::uint32_t> link_mask_;  // per cell (read by cells off the bulk path only)
   // listed-cell exchange (velocities, cell forces): the cell lists stay on the device while unchanged
   DeviceArray<std::uint32_t> gather_cells_, scatter_cells_;

@@ -130,6 +130,15 @@ Lattice::Lattice(const LatticeConfig& cfg) : cfg_(cfg) {
       throw ConfigError(std::string("face ") + kFaceName[f] + ": the outlet's pressure relaxation must lie in [0, 1) per step");
     if (open_face(fc.type) && n[f / 2] < 5)
       throw ConfigError(std::string("face ") + kFaceName[f] + ": open boundaries need at least 5 cells across the domain");
+    if (fc.absorbing_cells != 0) {
+      if (fc.type != FaceType::VelocityInlet)
+        throw ConfigError(std::string("face ") + kFaceName[f] + ": an absorbing layer needs a velocity inlet face");
+      if (fc.absorbing_cells < 0 || 2 * fc.absorbing_cells > n[f / 2] - 2)
+        throw ConfigError(std::string("face ") + kFaceName[f] + ": the absorbing layer must be 1 to " + std::to_string((n[f / 2] - 2) / 2) +
+                          " cells thick (" + std::to_string(fc.absorbing_cells) + " given)");
+      if (!(fc.absorbing_strength > 0.0f && fc.absorbing_strength <= 1.0f))
+        throw ConfigError(std::string("face ") + kFaceName[f] + ": the absorbing layer's strength must lie in (0, 1] per step");
+    }
   }
   for (int a = 0; a < 3; ++a)
     if (!std::isfinite(cfg.uniform_force[a])) throw ConfigError("uniform force is not finite");
@@ -527,6 +536,50 @@ void Lattice::finalize() {
     int x, y, z;
     cell_coords(host, bnd_cell_[b], x, y, z);
     gradient_stencil(host, x, y, z, bnd_cell_[b], &bnd_grad_cell_[9 * b], &bnd_grad_weight_[9 * b]);
+  }
+  // The absorbing layers' cells and their targets: the boundary index of each face's cells by their
+  // position along the face (the two other axes, the lower one fastest), then the fluid cells within
+  // reach, each once with the nearest face.
+  absorbing_cell_.clear();
+  absorbing_target_.clear();
+  absorbing_sigma_.clear();
+  std::array<std::vector<std::int32_t>, 6> face_target;
+  bool any_layer = false;
+  for (int f = 0; f < 6; ++f)
+    if (cfg_.faces[f].absorbing_cells > 0) {
+      face_target[f].assign(cells() / n[f / 2], -1);
+      any_layer = true;
+    }
+  const auto along = [&](int f, const int p[3]) {
+    const int a = f / 2, a1 = (a + 1) % 3, a2 = (a + 2) % 3, lo = std::min(a1, a2), hi = std::max(a1, a2);
+    return p[lo] + static_cast<std::size_t>(n[lo]) * p[hi];
+  };
+  for (long b = 0; b < nb && any_layer; ++b) {
+    const int f = bnd_normal_[b];
+    if (face_target[f].empty() || static_cast<CellType>(type_[bnd_cell_[b]] & ~kGeneralBit) != CellType::VelocityInlet) continue;
+    int p[3];
+    cell_coords(host, bnd_cell_[b], p[0], p[1], p[2]);
+    face_target[f][along(f, p)] = static_cast<std::int32_t>(b);
+  }
+  std::vector<char> held(any_layer ? cells() : 0, 0);
+  for (std::uint32_t c : held_cell_) held[c] = 1;
+  for (std::size_t c = 0; c < cells() && any_layer; ++c) {
+    if (static_cast<CellType>(type_[c] & ~kGeneralBit) != CellType::Fluid || held[c]) continue;
+    int p[3];
+    cell_coords(host, c, p[0], p[1], p[2]);
+    int best = -1, best_d = 0;
+    for (int f = 0; f < 6; ++f) {
+      const int L = cfg_.faces[f].absorbing_cells, a = f / 2, d = (f & 1) ? n[a] - 1 - p[a] : p[a];
+      if (L == 0 || d < 1 || d > L || face_target[f][along(f, p)] < 0 || (best >= 0 && d >= best_d)) continue;
+      best = f;
+      best_d = d;
+    }
+    if (best < 0) continue;
+    const int L = cfg_.faces[best].absorbing_cells;
+    const float r = static_cast<float>(L + 1 - best_d) / static_cast<float>(L + 1);
+    absorbing_cell_.push_back(static_cast<std::uint32_t>(c));
+    absorbing_target_.push_back(static_cast<std::uint32_t>(face_target[best][along(best, p)]));
+    absorbing_sigma_.push_back(cfg_.faces[best].absorbing_strength * r * r);
   }
   finalized_ = true;
 }

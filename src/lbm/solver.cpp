@@ -56,6 +56,7 @@ Solver::Solver(Lattice lattice) : lattice_(std::move(lattice)) {
   view_.params = cfg.collision;
   view_.nbnd = static_cast<int>(lattice_.boundary_cells().size());
   view_.nheld = static_cast<int>(lattice_.held_cells().size());
+  view_.nabsorbing = static_cast<int>(lattice_.absorbing_cells().size());
   boundary_values_ = lattice_.boundary_values();
 }
 
@@ -181,7 +182,8 @@ namespace {
 bool same_face(const FaceCondition& a, const FaceCondition& b) {
   return a.type == b.type && a.velocity == b.velocity && a.density == b.density && a.inflow_from_reference == b.inflow_from_reference &&
          a.pressure_relaxation == b.pressure_relaxation && a.total_pressure_inflow == b.total_pressure_inflow &&
-         a.characteristic_inlet == b.characteristic_inlet;
+         a.characteristic_inlet == b.characteristic_inlet && a.absorbing_cells == b.absorbing_cells &&
+         a.absorbing_strength == b.absorbing_strength;
 }
 bool same_setup(const LatticeConfig& a, const LatticeConfig& b) {
   bool same = a.nx == b.nx && a.ny == b.ny && a.nz == b.nz && a.collision.nu == b.collision.nu &&
@@ -215,6 +217,7 @@ bool Solver::change_walls(Lattice& next, bool restart_flow) {
     }
     do_change_walls(std::move(next), {}, {});
     view_.nheld = static_cast<int>(lattice_.held_cells().size());
+    view_.nabsorbing = static_cast<int>(lattice_.absorbing_cells().size());
     start_from(f.rho, f.u);  // checked above
     return true;
   }
@@ -225,6 +228,7 @@ bool Solver::change_walls(Lattice& next, bool restart_flow) {
   });
   do_change_walls(std::move(next), freed, states);
   view_.nheld = static_cast<int>(lattice_.held_cells().size());
+  view_.nabsorbing = static_cast<int>(lattice_.absorbing_cells().size());
   return true;
 }
 

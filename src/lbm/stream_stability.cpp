@@ -35,6 +35,8 @@ StreamStabilityResult run_stream_stability(const StreamStabilityCase& c) {
     cfg.faces[0].type = FaceType::VelocityInlet;
     cfg.faces[0].velocity = {static_cast<float>(U), 0.0f, 0.0f};
     cfg.faces[0].characteristic_inlet = c.characteristic_inlet;
+    cfg.faces[0].absorbing_cells = c.absorbing_cells;
+    cfg.faces[0].absorbing_strength = 0.5f;
     cfg.faces[1].type = FaceType::PressureOutlet;
   }
   cfg.guard_interval = 16;

@@ -44,6 +44,10 @@ lbm::Lattice make_lattice(const LrmConfig& c, const lbm::UnitConverter& u, int e
     const double mach = u.mach_number();
     lc.faces[f].total_pressure_inflow = c.entraining_pressure_faces && c.faces[f] == lbm::FaceType::PressureOutlet;
     lc.faces[f].characteristic_inlet = c.characteristic_inlets && c.faces[f] == lbm::FaceType::VelocityInlet;
+    if (c.faces[f] == lbm::FaceType::VelocityInlet && c.absorbing_layer > 0) {
+      lc.faces[f].absorbing_cells = c.absorbing_layer;
+      lc.faces[f].absorbing_strength = static_cast<float>(c.absorbing_strength);
+    }
     if (c.faces[f] == lbm::FaceType::ImpedanceOutlet)
       lc.faces[f].pressure_relaxation = static_cast<float>(c.outlet_sigma[f] * (1.0 - mach * mach) / std::sqrt(3.0) / (edge - 1));
   }

@@ -26,6 +26,7 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
     std::string collision = "bgk";
     std::string faces = "periodic";
     bool characteristic = false;
+    int absorbing = 0;
     int size = 32;
     long steps = 2000;
     float amplitude = 1e-4f;
@@ -49,6 +50,9 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
       ->check(CLI::IsMember({"periodic", "inlet-outlet"}))
       ->capture_default_str();
   cmd->add_flag("--characteristic-inlet", o->characteristic, "inlet-outlet: a characteristic (non-reflecting) velocity inlet");
+  cmd->add_option("--absorbing-layer", o->absorbing, "inlet-outlet: an absorbing layer of this many cells inside the inlet (strength 0.5)")
+      ->check(CLI::Range(0, 64))
+      ->capture_default_str();
   cmd->add_option("--size", o->size, "cells per edge of the periodic box")->check(CLI::Range(4, 512))->capture_default_str();
   cmd->add_option("--steps", o->steps, "steps per case")->check(CLI::Range(1L, 100000000L))->capture_default_str();
   cmd->add_option("--amplitude", o->amplitude, "disturbance, lattice velocity units")->check(CLI::Range(1e-8, 1e-2))->capture_default_str();
@@ -75,6 +79,7 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
       c.smagorinsky = o->smagorinsky;
       c.collision = lbm::parse_collision_model(o->collision);
       c.characteristic_inlet = o->characteristic;
+      c.absorbing_cells = o->absorbing;
       c.faces = o->faces == "periodic" ? lbm::StreamStabilityCase::Faces::Periodic : lbm::StreamStabilityCase::Faces::InletOutlet;
       c.amplitude = o->amplitude;
       c.seed = o->seed == "shear" ? lbm::StreamStabilityCase::Seed::ShearWave : lbm::StreamStabilityCase::Seed::Random;

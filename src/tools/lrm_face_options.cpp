@@ -31,6 +31,11 @@ void LrmFaceOptions::add_to(CLI::App& cmd) {
       ->capture_default_str();
   cmd.add_flag("--characteristic-inlets", characteristic_inlets,
                "velocity faces let outgoing waves leave instead of reflecting them (non-reflecting inlets)");
+  cmd.add_option("--absorbing-layer", absorbing_layer,
+                 "velocity faces: an absorbing layer of this many cells that pulls the air towards the face's (0: none); "
+                 "damps the grid-scale mode where the inflow face meets a moving ground")
+      ->check(CLI::Range(0, 16))
+      ->capture_default_str();
 }
 
 void refuse_lrm_options(const CLI::App& cmd, std::initializer_list<const char*> others) {
@@ -38,7 +43,8 @@ void refuse_lrm_options(const CLI::App& cmd, std::initializer_list<const char*> 
     if (cmd.get_option(name)->count() > 0) throw CLI::ValidationError(name, "applies to the LRM only: add --inflow lrm");
   };
   for (const char* name : others) refuse(name);
-  for (const char* name : {"--faces", "--outlet-sigma", "--relaxed-faces", "--rotor-far-field", "--collision", "--characteristic-inlets"})
+  for (const char* name : {"--faces", "--outlet-sigma", "--relaxed-faces", "--rotor-far-field", "--collision", "--characteristic-inlets",
+                           "--absorbing-layer"})
     refuse(name);
 }
 
@@ -52,6 +58,7 @@ std::string LrmFaceOptions::label() const {
   if (far_field) s << ";rotor-far-field";
   if (collision != "bgk") s << ";" << collision;
   if (characteristic_inlets) s << ";characteristic-inlets";
+  if (absorbing_layer > 0) s << ";absorbing-layer=" << absorbing_layer;
   return s.str();
 }
 
@@ -61,6 +68,7 @@ void LrmFaceOptions::apply(lrm::LrmConfig& cfg) const {
   cfg.rotor_far_field = far_field;
   cfg.collision = lbm::parse_collision_model(collision);
   cfg.characteristic_inlets = characteristic_inlets;
+  cfg.absorbing_layer = absorbing_layer;
 }
 
 }  // namespace ship_lrm::tools

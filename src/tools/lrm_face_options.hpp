@@ -18,6 +18,7 @@ struct LrmFaceOptions {
   bool far_field = false;
   std::string collision = "bgk";
   bool characteristic_inlets = false;
+  int absorbing_layer = 0;
 
   // --faces, --outlet-sigma, --relaxed-faces, --rotor-far-field, --collision, --characteristic-inlets
   void add_to(CLI::App& cmd);

@@ -250,6 +250,28 @@ TEST(OpenBoundaries, ImpedanceOutletRelaxationOutsideItsRangeIsRefused) {
   EXPECT_THROW(Lattice{cfg}, ConfigError);
 }
 
+TEST(OpenBoundaries, AbsorbingLayerOutsideItsRangeIsRefused) {
+  LatticeConfig cfg = periodic_config(30, 3, 3, 0.01f);
+  cfg.faces[0].type = FaceType::VelocityInlet;
+  cfg.faces[1].type = FaceType::ImpedanceOutlet;
+  cfg.faces[0].absorbing_cells = 4;
+  cfg.faces[0].absorbing_strength = 0.5f;
+  EXPECT_NO_THROW(Lattice{cfg});
+  cfg.faces[1].absorbing_cells = 4;  // an outlet has no velocity to absorb towards
+  cfg.faces[1].absorbing_strength = 0.5f;
+  EXPECT_THROW(Lattice{cfg}, ConfigError);
+  cfg.faces[1].absorbing_cells = 0;
+  for (int cells : {-1, 15}) {  // 15 of 30: more than half the domain
+    cfg.faces[0].absorbing_cells = cells;
+    EXPECT_THROW(Lattice{cfg}, ConfigError);
+  }
+  cfg.faces[0].absorbing_cells = 4;
+  for (float strength : {0.0f, 1.5f, std::nanf("")}) {
+    cfg.faces[0].absorbing_strength = strength;
+    EXPECT_THROW(Lattice{cfg}, ConfigError);
+  }
+}
+
 // The entraining pressure face (FaceCondition::total_pressure_inflow). A duct of uniform flow U
 // between a velocity face and an entraining face: where the air leaves through the entraining face
 // it holds the ambient density; where the air enters through it, the air has come from rest, so

@@ -22,6 +22,8 @@ Lattice every_boundary_case(CollisionModel model = CollisionModel::Bgk, bool cha
   cfg.faces[0].type = FaceType::VelocityInlet;
   cfg.faces[0].velocity = {0.05f, 0.0f, 0.01f};
   cfg.faces[0].characteristic_inlet = characteristic_inlet;
+  cfg.faces[0].absorbing_cells = 3;  // absorb_cell after each step, beside the held block at x = 1
+  cfg.faces[0].absorbing_strength = 0.5f;
   cfg.faces[1].type = FaceType::PressureOutlet;
   cfg.faces[2].type = FaceType::SlipWall;
   cfg.faces[3].type = FaceType::ImpedanceOutlet;

@@ -54,6 +54,18 @@ struct FaceCondition {
   // (`validate stream-stability --faces inlet-outlet`). The mean inflow then follows the pressure at
   // the face: lower by c_s (rho - 1) where the flow raises it.
   bool characteristic_inlet = false;
+  // VelocityInlet: an absorbing layer of this many cells inside the face (0: none). After each step
+  // the velocity of each fluid cell at d = 1 .. absorbing_cells cells from the face moves towards the
+  // prescribed velocity of the face cell in its row (the same coordinates along the face):
+  //   u <- u + sigma(d) (u_face - u),  sigma(d) = absorbing_strength ((L + 1 - d) / (L + 1))^2,
+  // through the equilibrium part of its populations (lattice_view.hpp, absorb_cell). A sponge in the
+  // sense of Israeli & Orszag (1981, J. Comput. Phys. 41, 115; for LBM Xu & Sagaut 2013, J. Comput.
+  // Phys. 245, 14) that relaxes the velocity towards the inflow rather than raising the viscosity, so
+  // the air the face feeds in is the target, not damped towards a mean. It removes the grid-scale
+  // mode where the inlet meets a moving ground (docs/design.md, "ground corner"). Cost: the layer's
+  // cells only, in a pass after the step (like the held cells').
+  int absorbing_cells = 0;
+  float absorbing_strength = 0.0f;  // per step, in (0, 1]
 };
 
 struct LatticeConfig {
@@ -149,6 +161,12 @@ class Lattice {
   // Held cells in cell order and the wall index of each (kHeldWallAtRest for kHeldAtRest).
   const std::vector<std::uint32_t>& held_cells() const { return held_cell_; }
   const std::vector<std::uint8_t>& held_walls() const { return held_wall_; }
+  // The absorbing layers' cells (FaceCondition::absorbing_cells): plain fluid cells, not held, at
+  // d = 1 .. absorbing_cells from such a face whose face cell in the same row is a velocity inlet;
+  // per cell that boundary index and sigma(d) (of the nearest such face where layers overlap).
+  const std::vector<std::uint32_t>& absorbing_cells() const { return absorbing_cell_; }
+  const std::vector<std::uint32_t>& absorbing_targets() const { return absorbing_target_; }
+  const std::vector<float>& absorbing_sigmas() const { return absorbing_sigma_; }
 
  private:
   void check_cell(int x, int y, int z, const char* what) const;
@@ -171,6 +189,8 @@ class Lattice {
   std::vector<std::uint8_t> held_wall_;
   std::vector<std::int64_t> row_offsets_;
   std::vector<float> bnd_value_, bnd_grad_weight_;
+  std::vector<std::uint32_t> absorbing_cell_, absorbing_target_;
+  std::vector<float> absorbing_sigma_;
 };
 
 }  // namespace ship_lrm::lbm

@@ -55,6 +55,13 @@ struct LatticeView {
   int nheld = 0;
   const std::uint32_t* held_cell = nullptr;
   const std::uint8_t* held_wall = nullptr;
+  // Cells of the absorbing layers (FaceCondition::absorbing_cells; Lattice::absorbing_cells),
+  // numbered a = 0 .. nabsorbing-1: cell, the boundary index of the face cell whose velocity is its
+  // target, and the strength sigma per step.
+  int nabsorbing = 0;
+  const std::uint32_t* absorbing_cell = nullptr;
+  const std::uint32_t* absorbing_target = nullptr;
+  const float* absorbing_sigma = nullptr;
 };
 
 // Class of a bulk cell: x, y and z each first (0), interior (1) or last (2); cells on a periodic
@@ -841,6 +848,31 @@ SHIP_LRM_HD void hold_cell(const LatticeView& v, int h) {
     rigid_velocity(v.walls[v.held_wall[h]], static_cast<float>(x), static_cast<float>(y), static_cast<float>(z), u);
   SHIP_LRM_UNROLL
   for (int i = 0; i < Q; ++i) g[i] = equilibrium(i, rho, u);
+  scatter<kOddDone>(v, x, y, z, c, g);
+}
+
+// Absorbing-layer cell a (FaceCondition::absorbing_cells) after a step of parity kOddDone: the
+// velocity of the populations it emitted moves by sigma towards its face cell's prescribed velocity
+// u_t, u' = u + sigma (u_t - u), through the equilibrium part only (g += f_eq(rho, u') - f_eq(rho, u)):
+// mass and the non-equilibrium part stay (a relaxation of the velocity, not of the viscosity). The
+// list holds plain fluid cells only, each once. Only the cell itself writes these slots (see
+// hold_cell), so its cells can be processed in any order, in parallel.
+template <bool kOddDone>
+SHIP_LRM_HD void absorb_cell(const LatticeView& v, int a) {
+  const std::size_t c = v.absorbing_cell[a];
+  int x, y, z;
+  cell_coords(v, c, x, y, z);
+  float g[Q];
+  emitted<kOddDone>(v, x, y, z, c, g);
+  float rho, j[3], u[3], ut[3];
+  moments(g, rho, j);
+  const float sigma = v.absorbing_sigma[a], *target = v.bnd_value + 4 * static_cast<std::size_t>(v.absorbing_target[a]);
+  for (int k = 0; k < 3; ++k) {
+    u[k] = j[k] / rho;
+    ut[k] = u[k] + sigma * (target[k] - u[k]);
+  }
+  SHIP_LRM_UNROLL
+  for (int i = 0; i < Q; ++i) g[i] += equilibrium(i, rho, ut) - equilibrium(i, rho, u);
   scatter<kOddDone>(v, x, y, z, c, g);
 }
 

@@ -26,6 +26,7 @@ struct StreamStabilityCase {
   // pressure outlet (+x), y and z stay periodic: the open faces with the stream through them.
   enum class Faces { Periodic, InletOutlet } faces = Faces::Periodic;
   bool characteristic_inlet = false;  // InletOutlet: FaceCondition::characteristic_inlet
+  int absorbing_cells = 0;            // InletOutlet: FaceCondition::absorbing_cells (strength 0.5)
   float amplitude = 1e-4f;            // perturbation, lattice velocity units
   enum class Seed { Random, ShearWave } seed = Seed::Random;
   unsigned random_seed = 1;  // Random: every velocity component uniform in +- amplitude

@@ -56,6 +56,11 @@ struct LrmConfig {
   lbm::CollisionModel collision = lbm::CollisionModel::Bgk;  // lbm/cell_ops.hpp
   // Velocity faces as characteristic inlets (lbm::FaceCondition::characteristic_inlet)
   bool characteristic_inlets = false;
+  // Velocity faces with an absorbing layer of this many cells (lbm::FaceCondition::absorbing_cells;
+  // 0: none) and strength (per step at the face): it pulls the air next to the face towards the face's
+  // air, which damps the grid-scale mode where the inflow face meets a moving ground.
+  int absorbing_layer = 0;
+  double absorbing_strength = 0.5;
   lbm::Backend backend = lbm::Backend::Auto;
   // Impedance faces: sigma of the partially non-reflecting outlet (lbm::FaceCondition::pressure_relaxation,
   // K = sigma (1 - Ma^2) c_s / L per step with L the domain edge in cells, Poinsot & Lele 1992); 0: the
