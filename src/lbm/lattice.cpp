@@ -562,7 +562,8 @@ void Lattice::finalize() {
     face_target[f][along(f, p)] = static_cast<std::int32_t>(b);
   }
   std::vector<char> held(any_layer ? cells() : 0, 0);
-  for (std::uint32_t c : held_cell_) held[c] = 1;
+  if (any_layer)
+    for (std::uint32_t c : held_cell_) held[c] = 1;
   for (std::size_t c = 0; c < cells() && any_layer; ++c) {
     if (static_cast<CellType>(type_[c] & ~kGeneralBit) != CellType::Fluid || held[c]) continue;
     int p[3];
