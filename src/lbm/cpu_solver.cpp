@@ -319,8 +319,8 @@ class CpuSolver final : public Solver {
   }
 
   // The passes of a step (see update_boundary_state in lattice_view.hpp), then the held cells
-  // (hold_cell) and the absorbing layers' cells (absorb_cell), in one parallel region. Each loop is a TeamLoop (team_loop.hpp): a static share per
-  // thread that the others finish when it is held up.
+  // (hold_cell) and the absorbing layers' cells (absorb_cell), in one parallel region. Each loop is a TeamLoop (team_loop.hpp): a static
+  // share per thread that the others finish when it is held up.
   template <bool kOdd, int kCollision, int kForce>
   void run_step() {
     const LatticeView& v = view_;

@@ -200,9 +200,10 @@ class FlightModelNodelet : public nodelet::Nodelet {
       NODELET_WARN("FlightModel: only %u of %d subscribers on rotor/loads after %g s; starting", loads_.getNumSubscribers(),
                    wait_for_subscribers_, connect_timeout_);
     if (wait_for_recorder_ && !recorder_ready_)
-      NODELET_WARN("FlightModel: no begin_write from the recorder (rosbag record --publish) after %g s; starting, the bag may miss "
-                   "the first loads",
-                   connect_timeout_);
+      NODELET_WARN(
+          "FlightModel: no begin_write from the recorder (rosbag record --publish) after %g s; starting, the bag may miss "
+          "the first loads",
+          connect_timeout_);
     begin_write_.shutdown();
     if (link_ && !link_->wait_for_solver(connect_timeout_)) {
       NODELET_ERROR("FlightModel: no LRM solver on %s within %g s; flying on Pitt-Peters",

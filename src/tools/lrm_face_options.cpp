@@ -43,8 +43,8 @@ void refuse_lrm_options(const CLI::App& cmd, std::initializer_list<const char*> 
     if (cmd.get_option(name)->count() > 0) throw CLI::ValidationError(name, "applies to the LRM only: add --inflow lrm");
   };
   for (const char* name : others) refuse(name);
-  for (const char* name : {"--faces", "--outlet-sigma", "--relaxed-faces", "--rotor-far-field", "--collision", "--characteristic-inlets",
-                           "--absorbing-layer"})
+  for (const char* name :
+       {"--faces", "--outlet-sigma", "--relaxed-faces", "--rotor-far-field", "--collision", "--characteristic-inlets", "--absorbing-layer"})
     refuse(name);
 }
 
