@@ -24,6 +24,18 @@ StreamStabilityCase wake_inlet_outlet_case(int size, float mach) {
   c.sample_interval = 2000;
   return c;
 }
+
+// The LRM's lattice: Mach 0.3, air's lattice viscosity at N = 32, Smagorinsky s = 0.05; 4 000 steps.
+StreamStabilityCase lrm_lattice_case(int size) {
+  StreamStabilityCase c;
+  c.size = size;
+  c.mach = 0.3f;
+  c.nu = 1.37e-7f;
+  c.smagorinsky = 0.05f;
+  c.steps = 4000;
+  c.sample_interval = 1000;
+  return c;
+}
 }  // namespace
 
 // u_x = U + a sin(k y) in a periodic box: the mode decays as exp(-nu k^2 t) for any U along x. At
@@ -77,13 +89,7 @@ TEST(StreamStability, PlainBgkNearHalfTauDivergesAtMach03) {
 // (Over 64 000 steps in a 32^3 box it regrows slowly and saturates at 0.4 % of U, BGK at 2.5 % from
 // step 1 000: docs/benchmarks.md, "The recursive regularised collision".)
 TEST(StreamStability, RecursiveRegularisedCollisionDampsWhatBgkGrowsAtMach03) {
-  StreamStabilityCase c;
-  c.size = 16;
-  c.mach = 0.3f;
-  c.nu = 1.37e-7f;
-  c.smagorinsky = 0.05f;
-  c.steps = 4000;
-  c.sample_interval = 1000;
+  StreamStabilityCase c = lrm_lattice_case(16);
   const StreamStabilityResult bgk = run_stream_stability(c);
   c.collision = CollisionModel::RecursiveRegularized;
   const StreamStabilityResult rr = run_stream_stability(c);
@@ -128,13 +134,8 @@ TEST(StreamStability, AnAbsorbingLayerKeepsAStreamThroughAReflectingInletQuiet) 
   const StreamStabilityResult wake = run_stream_stability(c);
   ASSERT_FALSE(wake.diverged);
   EXPECT_LT(wake.growth(), 0.1);
-  StreamStabilityCase lrm;
+  StreamStabilityCase lrm = lrm_lattice_case(32);
   lrm.faces = StreamStabilityCase::Faces::InletOutlet;
-  lrm.mach = 0.3f;
-  lrm.nu = 1.37e-7f;
-  lrm.smagorinsky = 0.05f;
-  lrm.steps = 4000;
-  lrm.sample_interval = 1000;
   const StreamStabilityResult plain = run_stream_stability(lrm);
   lrm.absorbing_cells = 4;
   const StreamStabilityResult absorbed = run_stream_stability(lrm);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "lrm_test_config.hpp"
@@ -27,6 +28,37 @@ double worst_deviation(lrm::LrmDomain& d, const Vec3& stream) {
   }
   return worst;
 }
+
+// A uniform stream over the ground 6 m below the hub, the ground moving with the stream (forward
+// flight at the stream's speed over ground at rest), the flow started.
+std::shared_ptr<lrm::GroundPlane> add_ground_moving_with(lrm::LrmDomain& d, const Vec3& stream) {
+  d.set_stream(stream);
+  auto ground = std::make_shared<lrm::GroundPlane>(6.0);
+  lrm::RigidMotion m;
+  m.velocity = stream;
+  ground->set_motion(m);
+  d.add_wall(ground);
+  d.restart_flow();
+  return ground;
+}
+
+// v_IGE / v_OGE of the isolated rotor at 15 m/s with the rotor's far field at the faces, at z/R 0.5,
+// 0.6 and 0.8 (the forward ground sweep's quick variant).
+std::vector<double> forward_ratios_at_15_metres_per_second(lrm::LrmConfig base) {
+  base.rotor_far_field = true;
+  lrm::IsolatedRotorCase c;
+  c.speed = 15.0;
+  c.settle = 3.0;
+  c.average = 1.0;
+  const lrm::LrmConfig cfg = lrm::config_for_stream(base, c.speed);
+  const double oge = lrm::run_isolated_rotor(cfg, c).induced_mean;
+  std::vector<double> ratio;
+  for (double z_over_R : {0.5, 0.6, 0.8}) {
+    c.ground_height = z_over_R * cfg.radius;
+    ratio.push_back(lrm::run_isolated_rotor(cfg, c).induced_mean / oge);
+  }
+  return ratio;
+}
 }  // namespace
 
 TEST(Ground, StreamOverGroundMovingWithItStaysUniformWhileTheGroundMoves) {
@@ -42,14 +74,8 @@ TEST(Ground, StreamOverGroundMovingWithItStaysUniformWhileTheGroundMoves) {
   // mode still covers the ground (docs/benchmarks.md, session 11).
   lrm::LrmDomain d(quick_config());
   const Vec3 stream(-5.0, 0.0, 0.0);
-  d.set_stream(stream);
-  auto ground = std::make_shared<lrm::GroundPlane>(6.0);
-  lrm::RigidMotion m;
-  m.velocity = stream;
-  ground->set_motion(m);
-  d.add_wall(ground);
+  const auto ground = add_ground_moving_with(d, stream);
   EXPECT_GT(d.wall_cells(), 0u);
-  d.restart_flow();
   d.step(300);
   EXPECT_LT(worst_deviation(d, stream), 0.005 * stream.norm());
   const std::size_t before = d.wall_cells();
@@ -152,18 +178,7 @@ TEST(Ground, ForwardFlightAt15MetresPerSecondRisesMonotonicallyWithHeightAtTheSw
   // ratios' uncertainty from the averaging window 0.003).
   lrm::LrmConfig base = quick_config();
   base.reference_velocity = lrm::kForwardGroundLatticeVelocity;
-  base.rotor_far_field = true;
-  lrm::IsolatedRotorCase c;
-  c.speed = 15.0;
-  c.settle = 3.0;
-  c.average = 1.0;
-  const lrm::LrmConfig cfg = lrm::config_for_stream(base, c.speed);
-  const double oge = lrm::run_isolated_rotor(cfg, c).induced_mean;
-  std::vector<double> ratio;
-  for (double z_over_R : {0.5, 0.6, 0.8}) {
-    c.ground_height = z_over_R * cfg.radius;
-    ratio.push_back(lrm::run_isolated_rotor(cfg, c).induced_mean / oge);
-  }
+  const std::vector<double> ratio = forward_ratios_at_15_metres_per_second(base);
   EXPECT_LT(ratio[0], ratio[1]);
   EXPECT_LT(ratio[1], ratio[2]);
   EXPECT_LT(ratio[2], 1.0);
@@ -179,13 +194,7 @@ TEST(Ground, StreamAt15MetresPerSecondOverTheMovingGroundStaysUniformWithAnAbsor
   cfg.absorbing_layer = 4;
   lrm::LrmDomain d(cfg);
   const Vec3 stream(-15.0, 0.0, 0.0);
-  d.set_stream(stream);
-  auto ground = std::make_shared<lrm::GroundPlane>(6.0);
-  lrm::RigidMotion m;
-  m.velocity = stream;
-  ground->set_motion(m);
-  d.add_wall(ground);
-  d.restart_flow();
+  add_ground_moving_with(d, stream);
   d.step(1000);
   EXPECT_LT(worst_deviation(d, stream), 0.005 * stream.norm());
 }
@@ -196,19 +205,8 @@ TEST(Ground, ForwardFlightAt15MetresPerSecondRisesMonotonicallyWithHeightAtTheTh
   // rise with height and stay below 1, like Cheeseman-Bennett's (measured 0.717, 0.813, 0.861; at
   // lattice velocity 60 without the layer 0.680, 0.803, 0.831).
   lrm::LrmConfig base = quick_config();
-  base.rotor_far_field = true;
   base.absorbing_layer = 4;
-  lrm::IsolatedRotorCase c;
-  c.speed = 15.0;
-  c.settle = 3.0;
-  c.average = 1.0;
-  const lrm::LrmConfig cfg = lrm::config_for_stream(base, c.speed);
-  const double oge = lrm::run_isolated_rotor(cfg, c).induced_mean;
-  std::vector<double> ratio;
-  for (double z_over_R : {0.5, 0.6, 0.8}) {
-    c.ground_height = z_over_R * cfg.radius;
-    ratio.push_back(lrm::run_isolated_rotor(cfg, c).induced_mean / oge);
-  }
+  const std::vector<double> ratio = forward_ratios_at_15_metres_per_second(base);
   EXPECT_LT(ratio[0], ratio[1]);
   EXPECT_LT(ratio[1], ratio[2]);
   EXPECT_LT(ratio[2], 1.0);
