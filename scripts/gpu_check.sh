@@ -9,8 +9,8 @@
 # Device time is scarce (a lent machine: about 15 minutes a session, its start-up included), so the
 # checks run in order of what they decide, each under its own time limit, and a failing or hanging
 # one does not stop the rest:
-#   1. the device tests: CudaBackend.* (CUDA against CPU) and WakeFaceFeed.* (the face feed on the
-#      device against the host's);
+#   1. the device tests: CudaBackend.* (CUDA against CPU), CudaLrmDomain.* (the LRM domain on both),
+#      WakeFaceFeed.* (the face feed on the device against the host's), and a short approach on each backend (identical CSVs);
 #   2. issue 4 acceptance 6: the coupled step at N = 64, a = 1.25 (goal t_clock / t_sim <= 0.05);
 #   3. issue 5 acceptance 5: serving the faces of that domain from the default table (goal <= 5 % of
 #      its step), with the table made here on the GPU (also the precompute's MLUPS);
@@ -58,7 +58,7 @@ if [ -z "${PREBUILT:-}" ]; then
     -DCMAKE_CUDA_ARCHITECTURES="${CUDA_ARCH:-90}" "${extra[@]}" > "$out/configure.log" || { echo "configure failed: $out/configure.log"; exit 1; }
   # the programs the first three steps need first; the others after
   step build 480 cmake --build build/gpu -j"$(nproc)" --target ship_lrm_cli test_lbm || exit 1
-  cmake --build build/gpu -j"$(nproc)" --target test_wake > "$out/build_wake.log" 2>&1 || true
+  cmake --build build/gpu -j"$(nproc)" --target test_wake test_lrm > "$out/build_wake.log" 2>&1 || true
 fi
 [ -d .carry/lib ] && export LD_LIBRARY_PATH="$root/.carry/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export OMP_NUM_THREADS="${OMP_NUM_THREADS:-$(nproc)}"
@@ -67,12 +67,23 @@ bench="$bin/ship_lrm"
 # 1. device tests
 step cuda_tests 240 "$bin/test_lbm" --gtest_filter="CudaBackend.*:BadInput.Cuda*" || failed=1
 if [ -x "$bin/test_wake" ]; then step wake_feed_tests 240 "$bin/test_wake" --gtest_filter="WakeFaceFeed.*" || failed=1; fi
+if [ -x "$bin/test_lrm" ]; then step lrm_cuda_tests 240 "$bin/test_lrm" --gtest_filter="CudaLrmDomain.*" || failed=1; fi
+
+# 1b. end to end: a short approach over the tiny table on each backend; the backends are bit-identical,
+# so the two CSVs must be too (the device face feed, the frame motion and the disk exchange included).
+# Without the ship: a wall change restarts the CUDA backend's flow from its macroscopic fields (a new
+# solver) where the CPU's keeps its populations (LrmDomain::rebuild), so with walls they part by design.
+wake_dir="$(mktemp -d)"
+step wake_tiny 120 "$bench" wake --preset tiny --no-plot --out "$wake_dir/tiny.h5"
+approach_args=(approach --wake "$wake_dir/tiny.h5" --N 16 --duration 2 --startup 0.2 --start-distance 10 --height 5 --no-ship --no-plot)
+step approach_cpu 180 "$bench" "${approach_args[@]}" --backend cpu --out "$wake_dir/approach_cpu"
+step approach_cuda 180 "$bench" "${approach_args[@]}" --backend cuda --out "$wake_dir/approach_cuda"
+step approach_identical 10 cmp "$wake_dir/approach_cpu/approach.csv" "$wake_dir/approach_cuda/approach.csv" || failed=1
 
 # 2. the coupled step at N = 64 (issue 4 acceptance 6)
 step bench_lrm_64 240 "$bench" bench lrm --backend cuda --N 64 --reach 1.25 --seconds 5 --json
 
 # 3. the face feed from the default table (issue 5 acceptance 5), the table made here
-wake_dir="$(mktemp -d)"
 step wake_default 300 "$bench" wake --preset default --backend cuda --no-plot --out "$wake_dir/default.h5"
 if [ -f "$wake_dir/default.h5" ]; then
   step bench_wake_cuda 180 "$bench" bench wake --table "$wake_dir/default.h5" --N 64 --steps 200 --backend cuda --json
