@@ -1,6 +1,6 @@
 // The LRM domain on the CUDA backend against the CPU backend (issue 4): the same lattice (velocity
-// faces front and sides, impedance faces back, top and bottom, the fuselage's walls and held cells),
-// the same frame motion, rotor forces and inflow read-out. The backends share every per-cell function
+// faces front and sides, impedance faces back, top and bottom; no bodies), the same frame motion,
+// rotor forces and inflow read-out. The backends share every per-cell function
 // and are compiled without contraction, so the fields must agree to rounding after one step and
 // stay bit-identical in practice (docs/benchmarks.md). Runs where a CUDA device exists
 // (scripts/gpu_check.sh), reports itself skipped elsewhere.
