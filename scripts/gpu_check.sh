@@ -4,7 +4,8 @@
 # build/gpu/results). On a machine without CLI11 / GoogleTest, first run
 # scripts/prepare_gpu_carry.sh on a Debian machine and carry the .carry folder along.
 # With PREBUILT=DIR it skips the build and runs DIR's ship_lrm and test binaries (built elsewhere
-# with -DSHIP_LRM_CUDA=ON; shared libraries the GPU machine lacks, such as HDF5, in .carry/lib).
+# with -DSHIP_LRM_CUDA=ON; shared libraries the GPU machine lacks, such as HDF5, in .carry/lib); a
+# .carry/pack/carry.tar.xz made by scripts/pack_gpu_binaries.sh is unpacked and used that way.
 #
 # Device time is scarce (a lent machine: about 15 minutes a session, its start-up included), so the
 # checks run in order of what they decide, each under its own time limit, and a failing or hanging
@@ -48,6 +49,10 @@ step() {
   echo "commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)"
 } | tee "$out/device.txt"
 
+# binaries packed on another machine (scripts/pack_gpu_binaries.sh): unpack and run those
+if [ -z "${PREBUILT:-}" ] && [ -f .carry/pack/carry.tar.xz ]; then
+  python3 -c "import tarfile; tarfile.open('.carry/pack/carry.tar.xz').extractall('.carry')" && chmod +x .carry/bin/* && PREBUILT=.carry/bin
+fi
 bin="${PREBUILT:-build/gpu/bin}"
 if [ -z "${PREBUILT:-}" ]; then
   extra=()
