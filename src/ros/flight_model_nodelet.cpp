@@ -71,6 +71,9 @@ class FlightModelNodelet : public nodelet::Nodelet {
       pnh.param("clock_offset", clock_offset_, 1.0);
       pnh.param("wait_for_loads_subscribers", wait_for_subscribers_, 0);
       pnh.param("wait_for_recorder", wait_for_recorder_, false);
+      pnh.param("min_step_wall", min_step_wall_, 0.0);
+      if (!(min_step_wall_ >= 0.0 && min_step_wall_ <= 1.0))
+        throw ParamError("parameter " + pnh.resolveName("min_step_wall") + " must lie in [0, 1] s, got " + std::to_string(min_step_wall_));
       std::string mode;
       pnh.param<std::string>("realtime_mode", mode, "lockstep");
       if (mode != "lockstep" && mode != "pipelined")
@@ -89,9 +92,11 @@ class FlightModelNodelet : public nodelet::Nodelet {
       return;
     }
     clock_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10);
-    loads_ = nh.advertise<ship_lrm::RotorLoads>("rotor/loads", 100);
-    wrench_ = nh.advertise<geometry_msgs::WrenchStamped>("rotor/wrench", 10);
-    odom_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
+    // Deep queues for what a recorder keeps: a fast simulated-time run publishes faster than a busy
+    // recorder reads, and a full queue drops its oldest message (a bag once lacked its second load).
+    loads_ = nh.advertise<ship_lrm::RotorLoads>("rotor/loads", 10000);
+    wrench_ = nh.advertise<geometry_msgs::WrenchStamped>("rotor/wrench", 1000);
+    odom_ = nh.advertise<nav_msgs::Odometry>("odom", 1000);
     markers_ = nh.advertise<visualization_msgs::MarkerArray>("helicopter/markers", 2);
     status_ = nh.advertise<std_msgs::String>(kRunStatusTopic, 1, true);
     epoch_pub_ = nh.advertise<std_msgs::Time>(kEpochTopic, 1, true);
@@ -257,6 +262,10 @@ class FlightModelNodelet : public nodelet::Nodelet {
       if (realtime_) {
         pacer.wait_until(t);
         overruns_ = pacer.overruns();
+      } else if (min_step_wall_ > 0.0) {
+        // Simulated time, recorded: no faster than min_step_wall per step, so that the recorder, which
+        // keeps only its newest 100 messages per topic while it is held up, stays within them
+        std::this_thread::sleep_until(t0 + std::chrono::duration<double>(min_step_wall_));
       }
     }
     if (approach_ && !approach_->end_reason().empty()) NODELET_WARN("FlightModel: free flight %s", approach_->end_reason().c_str());
@@ -480,6 +489,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
   bool pilot_new_ = false;
   double lrm_timeout_ = 30, connect_timeout_ = 60, output_interval_ = 0.01, tf_interval_ = 0.02, clock_offset_ = 1.0;
   double next_output_ = 0, next_tf_ = 0, step_wall_s_ = 0;
+  double min_step_wall_ = 0;  // s of wall clock at least per step in simulated time (a recorder keeping up)
   long steps_ = 0;
   int wait_for_subscribers_ = 0;
   bool wait_for_recorder_ = false;
