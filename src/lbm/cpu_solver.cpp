@@ -263,6 +263,7 @@ class CpuSolver final : public Solver {
   }
   void mark_forced_segments() {
     const auto& segs = lattice_.bulk_segments();
+    listed_cells_.clear();  // their segments are looked up again
     segment_forced_.assign(segs.size(), 0);
     for (std::size_t s = 0; s < segs.size() && !force_.empty(); ++s)
       for (std::size_t c = segs[s].first; c < segs[s].first + segs[s].count && !segment_forced_[s]; ++c)
@@ -409,14 +410,21 @@ class CpuSolver final : public Solver {
     }
     const auto& segs = lattice_.bulk_segments();
     if (segment_forced_.size() != segs.size()) segment_forced_.assign(segs.size(), 0);
+    if (cells != listed_cells_) {  // the segment that holds each cell, if any (other cells take the checked path)
+      listed_cells_ = cells;
+      listed_segment_.assign(cells.size(), -1);
+      for (std::size_t k = 0; k < cells.size(); ++k) {  // (segments are in cell order)
+        const auto it =
+            std::upper_bound(segs.begin(), segs.end(), cells[k], [](std::uint32_t c, const Segment& sg) { return c < sg.first; });
+        if (it == segs.begin()) continue;
+        const std::size_t s = static_cast<std::size_t>(it - segs.begin()) - 1;
+        if (cells[k] < segs[s].first + segs[s].count) listed_segment_[k] = static_cast<std::int64_t>(s);
+      }
+    }
     for (std::size_t k = 0; k < cells.size(); ++k) {
       for (int a = 0; a < 3; ++a) force_[a * n + cells[k]] = f[3 * k + a];
       if (f[3 * k] == 0.0f && f[3 * k + 1] == 0.0f && f[3 * k + 2] == 0.0f) continue;
-      // the segment that holds the cell, if any (segments are in cell order; other cells take the checked path)
-      const auto it = std::upper_bound(segs.begin(), segs.end(), cells[k], [](std::uint32_t c, const Segment& sg) { return c < sg.first; });
-      if (it == segs.begin()) continue;
-      const std::size_t s = static_cast<std::size_t>(it - segs.begin()) - 1;
-      if (cells[k] < segs[s].first + segs[s].count) segment_forced_[s] = 1;
+      if (listed_segment_[k] >= 0) segment_forced_[static_cast<std::size_t>(listed_segment_[k])] = 1;
     }
   }
 
@@ -523,6 +531,11 @@ class CpuSolver final : public Solver {
   // Per bulk segment: 1 where a cell of it may hold a non-zero field force (set when one is set,
   // cleared only by set_force_field), so that segments without one skip the field.
   std::vector<std::uint8_t> segment_forced_;
+  // The cells of the last listed-cell force call and the bulk segment of each (-1: none): the LRM
+  // lists the same disk cells every step, and looking their segments up each time cost as much as
+  // evaluating the forces (session 39). Cleared where the segments change (mark_forced_segments).
+  std::vector<std::uint32_t> listed_cells_;
+  std::vector<std::int64_t> listed_segment_;
   // update_segment's group of cells, and the lanes its last cells are copied into: the AVX-512
   // registers' 16 floats where the compiler targets them, else 8 (an AVX2 register, two SSE ones).
   // The rest of a segment costs a whole group's arithmetic, so a wider group than the registers only

@@ -540,11 +540,11 @@ void LrmDomain::set_rotor_forces(const rotor::RotorForceHarmonics& h) {
       throw;
     }
   }
-  const auto forces = disk_.cell_forces(h);  // N per cell, on the blades
+  // N per cell on the blades -> the lattice force density on the air (the opposite force over the
+  // cell's volume; to_lattice_force_density is linear)
   const double volume = std::pow(units_.dx(), 3);
-  std::vector<float> f(3 * forces.size());
-  for (size_t k = 0; k < forces.size(); ++k)
-    for (int d = 0; d < 3; ++d) f[3 * k + d] = static_cast<float>(units_.to_lattice_force_density(-forces[k][d] / volume));
+  std::vector<float> f;
+  disk_.cell_forces(h, units_.to_lattice_force_density(-1.0 / volume), f);
   solver_->set_cell_forces(disk_cells_, f);
   disk_forces_ = std::move(f);
 }

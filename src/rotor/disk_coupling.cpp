@@ -83,6 +83,16 @@ DiskCoupling::DiskCoupling(int nx, int ny, double cx, double cy, double radius, 
     }
     trig_.push_back(t);
   }
+  const std::size_t n = cells_.size();
+  force_basis_.assign((2 * kHarmonicOrder + 1) * n, 0.0);
+  for (std::size_t c = 0; c < n; ++c) {
+    const double w = cells_[c].fraction / area_;
+    force_basis_[c] = w;
+    for (int k = 1; k <= kHarmonicOrder; ++k) {
+      force_basis_[k * n + c] = w * trig_[c][k - 1];
+      force_basis_[(kHarmonicOrder + k) * n + c] = w * trig_[c][kHarmonicOrder + k - 1];
+    }
+  }
   Eigen::Matrix3d g = Eigen::Matrix3d::Zero();
   for (const DiskCell& c : cells_) {
     const Eigen::Vector3d basis(1.0, c.r_over_R * std::sin(c.psi), c.r_over_R * std::cos(c.psi));
@@ -93,15 +103,38 @@ DiskCoupling::DiskCoupling(int nx, int ny, double cx, double cy, double radius, 
     for (int b = 0; b < 3; ++b) g_inv_[a][b] = gi(a, b);
 }
 
-std::vector<Vec3> DiskCoupling::cell_forces(const RotorForceHarmonics& h) const {
-  // F(psi) of thesis 6.5 with the cells' cos(k psi), sin(k psi) tabulated (this runs every step)
-  std::vector<Vec3> f(cells_.size());
-  for (size_t c = 0; c < cells_.size(); ++c) {
-    Vec3 v = h.cos[0];
-    for (int k = 1; k <= kHarmonicOrder; ++k) v += h.cos[k] * trig_[c][k - 1] + h.sin[k] * trig_[c][kHarmonicOrder + k - 1];
-    f[c] = v * (cells_[c].fraction / area_);
+void DiskCoupling::force_columns(const RotorForceHarmonics& h, std::vector<double>& f) const {
+  // F(psi) of thesis 6.5: F = c_0 + sum_k c_k cos(k psi) + s_k sin(k psi), times eps / A
+  const std::size_t n = cells_.size();
+  f.assign(3 * n, 0.0);
+  for (int m = 0; m <= 2 * kHarmonicOrder; ++m) {
+    const Vec3& coef = m <= kHarmonicOrder ? h.cos[m] : h.sin[m - kHarmonicOrder];
+    const double* basis = force_basis_.data() + m * n;
+    for (int d = 0; d < 3; ++d) {
+      const double a = coef[d];
+      if (a == 0.0) continue;  // (a hover's higher harmonics cost nothing)
+      double* col = f.data() + d * n;
+      for (std::size_t c = 0; c < n; ++c) col[c] += a * basis[c];
+    }
   }
-  return f;
+}
+
+std::vector<Vec3> DiskCoupling::cell_forces(const RotorForceHarmonics& h) const {
+  std::vector<double> f;
+  force_columns(h, f);
+  const std::size_t n = cells_.size();
+  std::vector<Vec3> out(n);
+  for (std::size_t c = 0; c < n; ++c) out[c] = Vec3(f[c], f[n + c], f[2 * n + c]);
+  return out;
+}
+
+void DiskCoupling::cell_forces(const RotorForceHarmonics& h, double scale, std::vector<float>& out) const {
+  std::vector<double> f;
+  force_columns(h, f);
+  const std::size_t n = cells_.size();
+  out.resize(3 * n);
+  for (std::size_t c = 0; c < n; ++c)
+    for (int d = 0; d < 3; ++d) out[3 * c + d] = static_cast<float>(scale * f[d * n + c]);
 }
 
 }  // namespace ship_lrm::rotor

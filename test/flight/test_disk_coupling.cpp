@@ -71,3 +71,33 @@ TEST(DiskCoupling, AzimuthConvention) {
   }
   EXPECT_THROW(DiskCoupling(20, 20, 10, 10, 12.0), std::invalid_argument);  // does not fit
 }
+
+TEST(DiskCoupling, CellForcesAreTheHarmonicSeriesAtEachCell) {
+  // thesis 6.5: the force of a cell is F(psi) eps / A with F(psi) = c_0 + sum_k (c_k cos k psi +
+  // s_k sin k psi), k = 1..9, here summed directly at each cell's azimuth with every harmonic set
+  const DiskCoupling disk(36, 36, 17.5, 17.3, 15.75, 360);
+  RotorForceHarmonics h;
+  h.cos[0] = Vec3(120, -40, -24525);
+  for (int k = 1; k <= kHarmonicOrder; ++k) {
+    h.cos[k] = Vec3(3.0 * k, -2.0 * k, 900.0 / k);
+    h.sin[k] = Vec3(-1.5 * k, 4.0, -600.0 / k);
+  }
+  const std::vector<Vec3> f = disk.cell_forces(h);
+  const double scale = -2.5e-9;  // the coupled step's newtons per cell to lattice force density (N = 64)
+  std::vector<float> scaled;
+  disk.cell_forces(h, scale, scaled);
+  ASSERT_EQ(f.size(), disk.cells().size());
+  ASSERT_EQ(scaled.size(), 3 * f.size());
+  double worst = 0, worst_scaled = 0;
+  for (size_t c = 0; c < f.size(); ++c) {
+    const DiskCell& cell = disk.cells()[c];
+    Vec3 F = h.cos[0];
+    for (int k = 1; k <= kHarmonicOrder; ++k) F += h.cos[k] * std::cos(k * cell.psi) + h.sin[k] * std::sin(k * cell.psi);
+    const Vec3 expected = F * (cell.fraction / disk.area());
+    worst = std::max(worst, (f[c] - expected).norm() / expected.norm());
+    for (int d = 0; d < 3; ++d)
+      worst_scaled = std::max(worst_scaled, std::abs(scaled[3 * c + d] - scale * expected[d]) / std::abs(scale * expected.norm()));
+  }
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_LT(worst_scaled, 1e-7);  // float's rounding
+}
