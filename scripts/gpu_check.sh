@@ -73,6 +73,13 @@ bench="$bin/ship_lrm"
 step cuda_tests 240 "$bin/test_lbm" --gtest_filter="CudaBackend.*:BadInput.Cuda*" || failed=1
 if [ -x "$bin/test_wake" ]; then step wake_feed_tests 240 "$bin/test_wake" --gtest_filter="WakeFaceFeed.*" || failed=1; fi
 if [ -x "$bin/test_lrm" ]; then step lrm_cuda_tests 240 "$bin/test_lrm" --gtest_filter="CudaLrmDomain.*" || failed=1; fi
+# 1a. the diagnostics variant, where packed (TRACE_CELL=0,5,5 scripts/pack_gpu_binaries.sh build/gpu-trace): the
+# same LRM device tests, printing pass 1 of the open boundaries at that cell on both backends
+if [ -f .carry/pack/trace.tar.xz ]; then
+  python3 -c "import tarfile; tarfile.open('.carry/pack/trace.tar.xz').extractall('.carry/trace')" && chmod +x .carry/trace/bin/* &&
+    LD_LIBRARY_PATH="$root/.carry/trace/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" step lrm_trace 120 .carry/trace/bin/test_lrm \
+      --gtest_filter="CudaLrmDomain.LatticeOfATurningDomainMatchesCpuOnBareSolvers:CudaLrmDomain.MatchesCpuInATurningStreamWithRotorForces"
+fi
 
 # 1b. end to end: a short approach over the tiny table on each backend; the backends are bit-identical,
 # so the two CSVs must be too (the device face feed, the frame motion and the disk exchange included).
