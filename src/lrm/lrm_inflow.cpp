@@ -77,7 +77,7 @@ void LrmInflow::advance(const rotor::RotorDiskState& state, double dt) {
   if (n <= 0) return;  // a coarse lattice steps less often; the last inflow holds meanwhile
   auto t = Clock::now();
   domain_.step(n);
-  domain_.solver().synchronize();
+  if (time_parts_) domain_.solver().synchronize();
   times_.lbm += seconds_since(t);
   inflow_ = domain_.inflow();
   times_.inflow += seconds_since(t);

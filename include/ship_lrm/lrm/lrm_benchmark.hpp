@@ -17,9 +17,12 @@ struct LrmBenchmarkResult {
   double simulated_seconds = 0, wall_seconds = 0;
   double clock_over_sim = 0;  // t_clock / t_sim (thesis 8.3.1; < 1 is real time)
   double mlups = 0;           // million lattice updates per second
-  // simulated-time run: where the wall time went (LrmInflow::times(); flight = the rest)
+  // simulated-time run: where the wall time went (LrmInflow::times(); flight = the rest). On a device
+  // backend from a second run of as many steps that waits for the device after the LBM steps, whose
+  // t_clock / t_sim is parts_clock_over_sim (0: not run, the CPU's split is the timed run's own)
   bool has_split = false;
   double motion_s = 0, forces_s = 0, lbm_s = 0, inflow_s = 0, flight_s = 0;
+  double parts_clock_over_sim = 0;
   // LrmConfig::rotor_far_field: how often its shape was computed in the whole run (warm-up included), and
   // the time that took
   long far_field_builds = 0;
