@@ -111,7 +111,9 @@ std::function<int()> add_bench_command(CLI::App& app) {
         std::cout << std::fixed << std::setprecision(3) << "wake faces, " << r.backend << ", N = " << r.nodes << " (" << r.cells_per_edge
                   << "^3 cells, " << r.boundary_cells << " boundary cells): feed " << 1e3 * r.feed_seconds << " ms, LBM step "
                   << 1e3 * r.step_seconds << " ms per step: " << std::setprecision(1) << 100 * r.feed_fraction() << " % (" << r.refreshes
-                  << " refreshes in " << r.steps << " steps, " << r.window_loads << " window reads)\n";
+                  << " refreshes in " << r.steps << " steps, " << r.window_loads << " window reads); in the loop without waits "
+                  << 100 * r.loop_feed_fraction() << " % (" << std::setprecision(3) << 1e3 * r.loop_fed_seconds << " against "
+                  << 1e3 * r.loop_alone_seconds << " ms per step)\n";
       return 0;
     }
     if (lrm_cmd->parsed()) {

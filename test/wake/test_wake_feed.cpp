@@ -2,11 +2,13 @@
 // exactly the domain that the uniform stream gives, and a refresh happens only when it is due.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "../lbm/backend_difference.hpp"
 #include "ship_lrm/lrm/wake_feed.hpp"
 #include "temp_path.hpp"
+#include "tiny_approach.hpp"
 
 using namespace ship_lrm;
 
@@ -216,4 +218,21 @@ TEST(WakeFaceFeed, CudaFeedMatchesTheHostFeed) {
   const auto a = cpu.domain.solver().fields(), b = gpu.domain.solver().fields();
   EXPECT_EQ(a.u, b.u);
   EXPECT_EQ(a.rho, b.rho);
+}
+
+// bench wake (issue 5 acceptance 5) over the tiny table: the faces are refreshed as the hub flies
+// through it, and the feed is timed both ways, each step to its end and in the loop without waits.
+TEST(WakeFaceFeed, BenchmarkTimesTheFeedEachStepAndInTheLoop) {
+  lrm::LrmConfig c;
+  c.nodes = 16;
+  c.backend = lbm::Backend::Cpu;
+  const lrm::WakeFeedBenchmark r = lrm::run_wake_feed_benchmark(test::tiny_table(), c, 20);
+  EXPECT_EQ(r.steps, 20);
+  EXPECT_GT(r.refreshes, 0u);
+  EXPECT_LE(r.refreshes, 20u);
+  for (double t : {r.step_seconds, r.feed_seconds, r.loop_fed_seconds, r.loop_alone_seconds}) {
+    EXPECT_TRUE(std::isfinite(t));
+    EXPECT_GT(t, 0.0);
+  }
+  EXPECT_NE(r.to_json().find("\"loop_feed_fraction\""), std::string::npos);
 }

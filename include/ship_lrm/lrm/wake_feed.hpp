@@ -43,6 +43,12 @@ struct WakeFeedBenchmark {
   std::size_t boundary_cells = 0, window_loads = 0, read_ahead_hits = 0, refreshes = 0;
   double step_seconds = 0, feed_seconds = 0;  // per LBM step
   double feed_fraction() const { return feed_seconds / step_seconds; }
+  // The same in the loop as the coupled runs step it, without waiting for the device between feed and
+  // step (above, each is timed to its end, which on a GPU adds a synchronisation's round trip to the
+  // feed): the wall time per step of the faces fed and stepped, and of the steps alone with the faces
+  // held (the best of two alternating runs of `steps` steps each).
+  double loop_fed_seconds = 0, loop_alone_seconds = 0;
+  double loop_feed_fraction() const { return loop_fed_seconds / loop_alone_seconds - 1.0; }
   std::string to_json() const;
 };
 WakeFeedBenchmark run_wake_feed_benchmark(const std::string& table, const LrmConfig& cfg, int steps, double speed = 5.0,
