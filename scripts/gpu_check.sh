@@ -12,6 +12,8 @@
 # one does not stop the rest:
 #   1. the device tests: CudaBackend.* (CUDA against CPU), CudaLrmDomain.* (the LRM domain on both),
 #      WakeFaceFeed.* (the face feed on the device against the host's), and a short approach on each backend (identical CSVs);
+#      where .carry/pack/trace.tar.xz is packed, the LRM device tests again from the diagnostics build, which
+#      prints pass 1 of the open boundaries at one cell on both backends (lrm_trace.log);
 #   2. issue 4 acceptance 6: the coupled step at N = 64, a = 1.25 (goal t_clock / t_sim <= 0.05);
 #   3. issue 5 acceptance 5: serving the faces of that domain from the default table (goal <= 5 % of
 #      its step), with the table made here on the GPU (also the precompute's MLUPS);
