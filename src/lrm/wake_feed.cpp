@@ -63,7 +63,6 @@ WakeFeedBenchmark run_wake_feed_benchmark(const std::string& table, const LrmCon
   LrmConfig c = config_for_stream(cfg, std::abs(info.free_stream[0]) + speed);
   LrmDomain domain(c);
   WakeFaceFeed feed(t);
-  WakeFaceFeed::Pose pose;
   // start from the undisturbed stream relative to the hub, not from rest (no impulsive start)
   domain.set_stream(Vec3(info.free_stream[0] - speed, info.free_stream[1], info.free_stream[2]));
   domain.restart_flow();
@@ -73,13 +72,14 @@ WakeFeedBenchmark run_wake_feed_benchmark(const std::string& table, const LrmCon
   std::size_t refreshes = 0;
   const int warm = 3;
   const auto pose_at = [&](double time) {
+    WakeFaceFeed::Pose pose;
     pose.hub = Vec3(-12.75 * 1.0 + speed * (time - t0) - 40.0, 0.0, -height);  // from 40 m behind the spot
     pose.hub_velocity = Vec3(speed, 0, 0);
     return pose;
   };
   for (int s = -warm; s < steps; ++s) {
     const double time = t0 + std::max(s, 0) * domain.time_step();
-    pose_at(time);
+    const WakeFaceFeed::Pose pose = pose_at(time);
     const auto a = Clock::now();
     refreshes += feed.apply(domain, time, pose) && s >= 0;
     domain.solver().synchronize();

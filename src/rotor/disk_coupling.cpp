@@ -75,22 +75,15 @@ DiskCoupling::DiskCoupling(int nx, int ny, double cx, double cy, double radius, 
       cells_.push_back(c);
       area_ += eps;
     }
-  for (const DiskCell& c : cells_) {
-    std::array<double, 2 * kHarmonicOrder> t{};
-    for (int k = 1; k <= kHarmonicOrder; ++k) {
-      t[k - 1] = std::cos(k * c.psi);
-      t[kHarmonicOrder + k - 1] = std::sin(k * c.psi);
-    }
-    trig_.push_back(t);
-  }
   const std::size_t n = cells_.size();
   force_basis_.assign((2 * kHarmonicOrder + 1) * n, 0.0);
   for (std::size_t c = 0; c < n; ++c) {
-    const double w = cells_[c].fraction / area_;
+    const double psi = cells_[c].psi, w = cells_[c].fraction / area_;
+    sin_cos_psi_.push_back({std::sin(psi), std::cos(psi)});
     force_basis_[c] = w;
     for (int k = 1; k <= kHarmonicOrder; ++k) {
-      force_basis_[k * n + c] = w * trig_[c][k - 1];
-      force_basis_[(kHarmonicOrder + k) * n + c] = w * trig_[c][kHarmonicOrder + k - 1];
+      force_basis_[k * n + c] = w * std::cos(k * psi);
+      force_basis_[(kHarmonicOrder + k) * n + c] = w * std::sin(k * psi);
     }
   }
   Eigen::Matrix3d g = Eigen::Matrix3d::Zero();

@@ -18,8 +18,8 @@
 #include "ship_lrm/lbm/cell_types.hpp"
 
 // Diagnostics build only (CMake -DSHIP_LRM_TRACE_CELL=x,y,z, as scripts/pack_gpu_binaries.sh with
-// TRACE_CELL=x,y,z: defines SHIP_LRM_TRACE_X, _Y and _Z): pass 1 of the open boundaries prints its inputs and result at that cell on
-// either backend, so that the CUDA backend's state there can be compared with the CPU's line by line
+// TRACE_CELL=x,y,z: defines SHIP_LRM_TRACE_X, _Y and _Z): pass 1 of the open boundaries prints its
+// inputs and result at that cell on either backend, so that the CUDA backend's state there can be compared with the CPU's line by line
 // (the LRM domain's open defect, docs/benchmarks.md "Session 38 on an H200"). Nothing otherwise.
 #ifdef SHIP_LRM_TRACE_X
 #include <cstdio>
@@ -30,7 +30,7 @@
 #endif
 #define SHIP_LRM_TRACE_STATE(x, y, z, what, m)                                                                                   \
   do {                                                                                                                          \
-    const int trace_at_[3] = {SHIP_LRM_TRACE_X, SHIP_LRM_TRACE_Y, SHIP_LRM_TRACE_Z};                                                                             \
+    const int trace_at_[3] = {SHIP_LRM_TRACE_X, SHIP_LRM_TRACE_Y, SHIP_LRM_TRACE_Z};                                            \
     if ((x) == trace_at_[0] && (y) == trace_at_[1] && (z) == trace_at_[2])                                                      \
       printf("trace %s odd %d (%d, %d, %d) %s: rho %.9g u %.9g %.9g %.9g\n", SHIP_LRM_TRACE_BACKEND, kOdd ? 1 : 0, (x), (y), (z), \
              (what), (m).rho, (m).u[0], (m).u[1], (m).u[2]);                                                                    \
@@ -758,7 +758,8 @@ SHIP_LRM_HD void update_boundary_state(const LatticeView& v, int b) {
     const Macro mi2 = second ? support_state<kOdd>(v, in2) : mi;
     const bool inflow = v.face_inflow_reference[v.bnd_normal[b]] && sgn * m.u[axis] < 0.0f;
     SHIP_LRM_TRACE_STATE(x, y, z, "pass 1, impedance branch: inner neighbour", mi);
-    SHIP_LRM_TRACE_STATE(x, y, z, inflow ? "pass 1, impedance branch (inflow): 2nd neighbour" : "pass 1, impedance branch (outflow): 2nd neighbour", mi2);
+    SHIP_LRM_TRACE_STATE(x, y, z, inflow ? "pass 1, impedance branch (inflow): 2nd neighbour" : "pass 1, impedance branch (outflow): 2nd neighbour",
+                         mi2);
     for (int a = 0; a < 3; ++a)
       if (a != axis) m.u[a] = inflow ? v.bnd_value[4 * b + a] : 2.0f * mi.u[a] - mi2.u[a];
   } else if (t == CellType::PressureOutlet && support_cell(v, x, y, z, axis, -sgn, in)) {

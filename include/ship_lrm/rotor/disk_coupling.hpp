@@ -61,8 +61,8 @@ class DiskCoupling {
       const DiskCell& c = cells_[k];
       const Vec3 u = velocity(k);
       b0 += c.fraction * u;
-      bs += (c.fraction * c.r_over_R * trig_[k][kHarmonicOrder]) * u;  // sin psi
-      bc += (c.fraction * c.r_over_R * trig_[k][0]) * u;               // cos psi
+      bs += (c.fraction * c.r_over_R * sin_cos_psi_[k][0]) * u;
+      bc += (c.fraction * c.r_over_R * sin_cos_psi_[k][1]) * u;
     }
     // weighted least squares for (mean, sine, cosine); on a disk centred in the grid the normal
     // matrix is diagonal and the mean is sum eps u / sum eps, as in the thesis
@@ -75,7 +75,7 @@ class DiskCoupling {
 
  private:
   std::vector<DiskCell> cells_;
-  std::vector<std::array<double, 2 * kHarmonicOrder>> trig_;  // cos(k psi), sin(k psi), k = 1..9, per cell
+  std::vector<std::array<double, 2>> sin_cos_psi_;  // sin psi, cos psi per cell (extract)
   // F(psi) eps / A as a sum over the harmonics' coefficients of per-cell columns, column m of cell c
   // at [m * cells + c]: eps / A (m = 0), eps / A cos(k psi) (m = k), eps / A sin(k psi) (m = 9 + k).
   // Contiguous columns let the sum vectorise across the cells (it runs every coupled step).
