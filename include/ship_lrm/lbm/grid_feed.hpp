@@ -120,7 +120,7 @@ SHIP_LRM_HD void face_lattice_velocity(const double air[3], const double omega[3
 SHIP_LRM_HD float impedance_reference_shift(float pending, std::uint8_t normal, const float* old_u, const float* new_u) {
   const int axis = normal >> 1;
   const float sgn = (normal & 1) ? 1.0f : -1.0f;
-  return pending + sgn * (new_u[axis] - old_u[axis]);
+  return pending + sgn * (component(new_u, axis) - component(old_u, axis));
 }
 
 }  // namespace ship_lrm::lbm

@@ -222,6 +222,7 @@ SHIP_LRM_HD bool neighbour(const LatticeView& v, int x, int y, int z, int dx, in
   int p[3] = {x + dx, y + dy, z + dz};
   bool outside = false;
   uw[0] = uw[1] = uw[2] = uw[3] = 0.0f;
+  SHIP_LRM_UNROLL  // constant indices: p stays in registers (component() in hd.hpp)
   for (int a = 0; a < 3; ++a) {
     if (p[a] >= 0 && p[a] < v.n[a]) continue;
     const int f = 2 * a + (p[a] >= v.n[a] ? 1 : 0);
@@ -556,23 +557,25 @@ SHIP_LRM_HD Macro boundary_macro(const LatticeView& v, int b, const float g[Q], 
   Macro m;
   if (t == CellType::VelocityInlet) {
     for (int a = 0; a < 3; ++a) m.u[a] = v.bnd_value[4 * b + a];
+    const float un = component(m.u, axis);
     if (v.face_characteristic[v.bnd_normal[b]]) {
-      m.rho = characteristic_inlet_density(K, sgn * m.u[axis]);
-      m.u[axis] = sgn * characteristic_inlet_velocity(sgn * m.u[axis], m.rho);
+      m.rho = characteristic_inlet_density(K, sgn * un);
+      set_component(m.u, axis, sgn * characteristic_inlet_velocity(sgn * un, m.rho));
     } else {
-      m.rho = K / (1.0f + sgn * m.u[axis]);
+      m.rho = K / (1.0f + sgn * un);
     }
     return m;
   }
   if (t == CellType::PressureOutlet) {
     m.rho = v.bnd_value[4 * b];
-    const float inward = -sgn * prev.u[axis];  // sgn * u[axis] is the outward normal velocity
+    const float inward = -sgn * component(prev.u, axis);  // sgn * u[axis] is the outward normal velocity
     if (v.face_total_pressure[v.bnd_normal[b]] && inward > 0.0f) m.rho *= 1.0f - 1.5f * inward * inward;  // c_s^2 = 1/3
   } else {
     // + reference change; the density target relaxed towards the reference (FaceCondition::pressure_relaxation)
     const float relax = v.face_pressure_relaxation[v.bnd_normal[b]];
-    m.rho = impedance_density(K, prev.rho - relax * (prev.rho - 1.0f), sgn * prev.u[axis] + v.bnd_value[4 * b + 3]);
+    m.rho = impedance_density(K, prev.rho - relax * (prev.rho - 1.0f), sgn * component(prev.u, axis) + v.bnd_value[4 * b + 3]);
   }
+  SHIP_LRM_UNROLL
   for (int a = 0; a < 3; ++a) m.u[a] = (a == axis) ? sgn * (K / m.rho - 1.0f) : zou_he_tangential_momentum(g, axis, sgn, a) / m.rho;
   return m;
 }
@@ -591,14 +594,15 @@ SHIP_LRM_HD void initialize_boundary_state(const LatticeView& v, int b) {
 
 // Is (x,y,z)+d a fluid-like cell whose aux state is maintained? (Every fluid-like cell within
 // two cells along an axis of an open-boundary cell is in the support set.)
+// (Scalars, no local array indexed by axis: see component() in hd.hpp.)
 SHIP_LRM_HD bool support_cell(const LatticeView& v, int x, int y, int z, int axis, int d, std::size_t& nb) {
-  int p[3] = {x, y, z};
-  p[axis] += d;
-  if (p[axis] < 0 || p[axis] >= v.n[axis]) {
-    if (static_cast<FaceType>(v.face[2 * axis + (p[axis] >= 0 ? 1 : 0)]) != FaceType::Periodic) return false;
-    p[axis] = (p[axis] + v.n[axis]) % v.n[axis];
+  const int n = component(v.n, axis);
+  int q = (axis == 0 ? x : (axis == 1 ? y : z)) + d;
+  if (q < 0 || q >= n) {
+    if (static_cast<FaceType>(v.face[2 * axis + (q >= 0 ? 1 : 0)]) != FaceType::Periodic) return false;
+    q = (q + n) % n;
   }
-  nb = cell_index(v, p[0], p[1], p[2]);
+  nb = cell_index(v, axis == 0 ? q : x, axis == 1 ? q : y, axis == 2 ? q : z);
   return !is_wall(static_cast<CellType>(v.type[nb] & ~kGeneralBit));
 }
 
@@ -655,6 +659,7 @@ SHIP_LRM_HD constexpr bool open_face(FaceType f) {
 SHIP_LRM_HD bool open_edge_neighbour(const LatticeView& v, int x, int y, int z, std::size_t& diag, std::size_t& diag2) {
   int p[3] = {x, y, z}, step[3] = {0, 0, 0};
   int faces = 0;
+  SHIP_LRM_UNROLL  // constant indices: the arrays stay in registers (component() in hd.hpp)
   for (int a = 0; a < 3; ++a) {
     const bool lo = p[a] == 0 && open_face(static_cast<FaceType>(v.face[2 * a]));
     const bool hi = p[a] == v.n[a] - 1 && open_face(static_cast<FaceType>(v.face[2 * a + 1]));
@@ -669,6 +674,7 @@ SHIP_LRM_HD bool open_edge_neighbour(const LatticeView& v, int x, int y, int z, 
   if (faces < 2) return false;
   auto interior = [&](int k, std::size_t& c) {
     int q[3];
+    SHIP_LRM_UNROLL
     for (int a = 0; a < 3; ++a) {
       q[a] = p[a] + k * step[a];
       if (q[a] < 0 || q[a] >= v.n[a]) return false;
@@ -741,7 +747,7 @@ SHIP_LRM_HD void update_boundary_state(const LatticeView& v, int b) {
     if (t != CellType::VelocityInlet)
       for (int a = 0; a < 3; ++a) m.u[a] = 2.0f * mi.u[a] - mi2.u[a];
     else if (v.face_characteristic[v.bnd_normal[b]])  // the outgoing wave with this density, not boundary_macro's from the mixed sums
-      m.u[axis] = sgn * characteristic_inlet_velocity(sgn * v.bnd_value[4 * b + axis], m.rho);
+      set_component(m.u, axis, sgn * characteristic_inlet_velocity(sgn * v.bnd_value[4 * b + axis], m.rho));
   } else if (t == CellType::ImpedanceOutlet && support_cell(v, x, y, z, axis, -sgn, in)) {
     // Tangential velocity extrapolated linearly from the two interior neighbours along the normal
     // (zero second derivative): the Zou-He estimate from the known populations is biased by the
@@ -756,7 +762,7 @@ SHIP_LRM_HD void update_boundary_state(const LatticeView& v, int b) {
     const bool second =
         support_cell(v, x, y, z, axis, -2 * sgn, in2) && !is_open_boundary(static_cast<CellType>(v.type[in2] & ~kGeneralBit));
     const Macro mi2 = second ? support_state<kOdd>(v, in2) : mi;
-    const bool inflow = v.face_inflow_reference[v.bnd_normal[b]] && sgn * m.u[axis] < 0.0f;
+    const bool inflow = v.face_inflow_reference[v.bnd_normal[b]] && sgn * component(m.u, axis) < 0.0f;
     SHIP_LRM_TRACE_STATE(x, y, z, "pass 1, impedance branch: inner neighbour", mi);
     SHIP_LRM_TRACE_STATE(x, y, z, inflow ? "pass 1, impedance branch (inflow): 2nd neighbour" : "pass 1, impedance branch (outflow): 2nd neighbour",
                          mi2);
