@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "ship_lrm/lbm/benchmark.hpp"
+#include "ship_lrm/lbm/column_series.hpp"
 #include "ship_lrm/lbm/solver.hpp"
 
 namespace ship_lrm::lbm {
@@ -117,6 +118,22 @@ __global__ void scatter_force_kernel(float* force, std::size_t ncells, const std
   const std::size_t k = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (k >= n) return;
   for (int a = 0; a < 3; ++a) force[a * ncells + cells[k]] = f[3 * k + a];
+}
+
+// The columns' coefficients as a kernel argument (Solver::set_cell_force_coefficients): they cross
+// the bus with the launch, no copy of their own.
+struct ColumnCoefficients {
+  float c[3 * kMaxForceColumns];
+};
+
+// Force density at listed cell k as the sum of its columns (column_series.hpp, the host's sum).
+__global__ void column_force_kernel(float* force, std::size_t ncells, const std::uint32_t* cells, std::size_t n, const float* basis,
+                                    int columns, ColumnCoefficients coefficients) {
+  const std::size_t k = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (k >= n) return;
+  float f[3];
+  column_series(basis, n, k, k + 1, columns, coefficients.c, f, 1);
+  for (int a = 0; a < 3; ++a) force[a * ncells + cells[k]] = f[a];
 }
 
 template <bool kOdd>
@@ -333,13 +350,18 @@ class CudaSolver final : public Solver {
     std::copy(staging, staging + out.size(), out.begin());
   }
 
+  // The force field, zero where nothing was set, once listed cells get forces.
+  void ensure_force_field() {
+    const std::size_t n = lattice_.cells();
+    if (force_.size() == 3 * n) return;
+    force_.resize(3 * n);
+    check(cudaMemset(force_.data(), 0, 3 * n * sizeof(float)), "force field");
+    sync_view();
+  }
+
   void do_set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f) override {
     const std::size_t n = lattice_.cells();
-    if (force_.size() != 3 * n) {
-      force_.resize(3 * n);
-      check(cudaMemset(force_.data(), 0, 3 * n * sizeof(float)), "force field");
-      sync_view();
-    }
+    ensure_force_field();
     if (cells.empty()) return;
     if (cells != scatter_host_) {
       scatter_cells_.upload(cells);
@@ -351,6 +373,23 @@ class CudaSolver final : public Solver {
     check(cudaMemcpyAsync(scatter_values_.data(), staging, f.size() * sizeof(float), cudaMemcpyHostToDevice, 0), "upload");
     check(cudaEventRecord(staged_, 0), "event");
     scatter_force_kernel<<<blocks(cells.size()), kBlock>>>(force_.data(), n, scatter_cells_.data(), cells.size(), scatter_values_.data());
+    check(cudaGetLastError(), "cell forces");
+  }
+
+  // The columns stay on the device; each new set of coefficients is one launch.
+  void do_set_cell_force_columns(const std::vector<std::uint32_t>& cells, const std::vector<float>& basis, int columns) override {
+    column_cells_.upload(cells);
+    column_basis_.upload(basis);
+    column_count_ = columns;
+  }
+  void do_set_cell_force_coefficients(const std::vector<float>& coefficients) override {
+    ensure_force_field();
+    const std::size_t n = column_cells_.size();
+    if (n == 0) return;
+    ColumnCoefficients k{};
+    std::copy(coefficients.begin(), coefficients.end(), k.c);
+    column_force_kernel<<<blocks(n), kBlock>>>(force_.data(), lattice_.cells(), column_cells_.data(), n, column_basis_.data(),
+                                               column_count_, k);
     check(cudaGetLastError(), "cell forces");
   }
 
@@ -503,6 +542,10 @@ class CudaSolver final : public Solver {
   DeviceArray<std::uint32_t> gather_cells_, scatter_cells_;
   std::vector<std::uint32_t> gather_host_, scatter_host_;
   DeviceArray<float> gather_out_, scatter_values_;
+  // the force columns (set_cell_force_columns): cells, columns, column count
+  DeviceArray<std::uint32_t> column_cells_;
+  DeviceArray<float> column_basis_;
+  int column_count_ = 0;
   unsigned long long* flag_ = nullptr;
   // the gridded field the faces are fed from (feed_from_grid): two frames of a window, and the serial
   // numbers of the windows they were copied from

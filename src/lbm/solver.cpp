@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "ship_lrm/lbm/column_series.hpp"
 #include "ship_lrm/lbm/refill.hpp"
 
 namespace ship_lrm::lbm {
@@ -261,6 +262,43 @@ void Solver::set_cell_forces(const std::vector<std::uint32_t>& cells, const std:
       if (!std::isfinite(f[3 * k + a])) throw ConfigError("set_cell_forces: force is not finite");
   }
   do_set_cell_forces(cells, f);
+}
+
+void Solver::set_cell_force_columns(const std::vector<std::uint32_t>& cells, const std::vector<float>& basis, int columns) {
+  if (columns < 1 || columns > kMaxForceColumns)
+    throw ConfigError("set_cell_force_columns: " + std::to_string(columns) + " columns, expected 1 to " + std::to_string(kMaxForceColumns));
+  if (basis.size() != static_cast<std::size_t>(columns) * cells.size())
+    throw ConfigError("set_cell_force_columns: expected " + std::to_string(columns) + " values per listed cell");
+  for (std::uint32_t c : cells)
+    if (c >= lattice_.cells()) throw ConfigError("set_cell_force_columns: cell index out of range");
+  for (float b : basis)
+    if (!std::isfinite(b)) throw ConfigError("set_cell_force_columns: a column value is not finite");
+  do_set_cell_force_columns(cells, basis, columns);
+  force_columns_ = columns;
+}
+
+void Solver::set_cell_force_coefficients(const std::vector<float>& coefficients) {
+  if (force_columns_ == 0) throw ConfigError("set_cell_force_coefficients: call set_cell_force_columns first");
+  if (coefficients.size() != 3 * static_cast<std::size_t>(force_columns_))
+    throw ConfigError("set_cell_force_coefficients: expected 3 values per column (" + std::to_string(force_columns_) + " columns)");
+  for (float c : coefficients)
+    if (!std::isfinite(c)) throw ConfigError("set_cell_force_coefficients: a coefficient is not finite");
+  do_set_cell_force_coefficients(coefficients);
+}
+
+void Solver::do_set_cell_force_columns(const std::vector<std::uint32_t>& cells, const std::vector<float>& basis, int) {
+  column_cells_ = cells;
+  column_basis_ = basis;
+}
+
+void Solver::do_set_cell_force_coefficients(const std::vector<float>& coefficients) {
+  const std::size_t n = column_cells_.size();
+  column_sums_.resize(3 * n);
+  column_series(column_basis_.data(), n, 0, n, force_columns_, coefficients.data(), column_sums_.data(), n);
+  column_forces_.resize(3 * n);
+  for (std::size_t k = 0; k < n; ++k)
+    for (int a = 0; a < 3; ++a) column_forces_[3 * k + a] = column_sums_[a * n + k];
+  do_set_cell_forces(column_cells_, column_forces_);
 }
 
 void Solver::set_uniform_force(const std::array<float, 3>& f) {

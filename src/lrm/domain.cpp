@@ -267,7 +267,9 @@ void LrmDomain::rebuild(bool carry_flow, bool near_faces) {
   if (solver_->lattice().boundary_cells() != old_boundary) face_air_stale_ = far_field_stale_ = true;  // walls moved through a face
   face_positions_.clear();  // a new solver: its boundary cells (set_motion lists them again)
   find_body_faces();
-  if (!disk_forces_.empty()) solver_->set_cell_forces(disk_cells_, disk_forces_);
+  if (disk_force_columns_.empty()) disk_force_columns_ = disk_.force_columns();
+  solver_->set_cell_force_columns(disk_cells_, disk_force_columns_, rotor::DiskCoupling::kForceColumns);
+  if (!disk_force_coefficients_.empty()) solver_->set_cell_force_coefficients(disk_force_coefficients_);
   if (motion_set_) {
     motion_set_ = false;  // push the faces and the frame forces to the new solver
     set_motion(motion_);
@@ -541,12 +543,12 @@ void LrmDomain::set_rotor_forces(const rotor::RotorForceHarmonics& h) {
     }
   }
   // N per cell on the blades -> the lattice force density on the air (the opposite force over the
-  // cell's volume; to_lattice_force_density is linear)
+  // cell's volume; to_lattice_force_density is linear), summed where the lattice lives
   const double volume = std::pow(units_.dx(), 3);
-  std::vector<float> f;
-  disk_.cell_forces(h, units_.to_lattice_force_density(-1.0 / volume), f);
-  solver_->set_cell_forces(disk_cells_, f);
-  disk_forces_ = std::move(f);
+  std::vector<float> coefficients;
+  disk_.force_coefficients(h, units_.to_lattice_force_density(-1.0 / volume), coefficients);
+  solver_->set_cell_force_coefficients(coefficients);
+  disk_force_coefficients_ = std::move(coefficients);
 }
 
 void LrmDomain::step(long n) {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "ship_lrm/lbm/column_series.hpp"
+
 namespace ship_lrm::rotor {
 namespace {
 
@@ -76,7 +78,7 @@ DiskCoupling::DiskCoupling(int nx, int ny, double cx, double cy, double radius, 
       area_ += eps;
     }
   const std::size_t n = cells_.size();
-  force_basis_.assign((2 * kHarmonicOrder + 1) * n, 0.0);
+  force_basis_.assign(kForceColumns * n, 0.0);
   for (std::size_t c = 0; c < n; ++c) {
     const double psi = cells_[c].psi, w = cells_[c].fraction / area_;
     sin_cos_psi_.push_back({std::sin(psi), std::cos(psi)});
@@ -96,38 +98,33 @@ DiskCoupling::DiskCoupling(int nx, int ny, double cx, double cy, double radius, 
     for (int b = 0; b < 3; ++b) g_inv_[a][b] = gi(a, b);
 }
 
-void DiskCoupling::force_columns(const RotorForceHarmonics& h, std::vector<double>& f) const {
-  // F(psi) of thesis 6.5: F = c_0 + sum_k c_k cos(k psi) + s_k sin(k psi), times eps / A
-  const std::size_t n = cells_.size();
-  f.assign(3 * n, 0.0);
-  for (int m = 0; m <= 2 * kHarmonicOrder; ++m) {
+namespace {
+// The harmonics as the columns' coefficients (force_columns()'s order), 3 per column.
+template <class T>
+void pack_coefficients(const RotorForceHarmonics& h, double scale, std::vector<T>& out) {
+  out.resize(3 * DiskCoupling::kForceColumns);
+  for (int m = 0; m < DiskCoupling::kForceColumns; ++m) {
     const Vec3& coef = m <= kHarmonicOrder ? h.cos[m] : h.sin[m - kHarmonicOrder];
-    const double* basis = force_basis_.data() + m * n;
-    for (int d = 0; d < 3; ++d) {
-      const double a = coef[d];
-      if (a == 0.0) continue;  // (a hover's higher harmonics cost nothing)
-      double* col = f.data() + d * n;
-      for (std::size_t c = 0; c < n; ++c) col[c] += a * basis[c];
-    }
+    for (int d = 0; d < 3; ++d) out[3 * m + d] = static_cast<T>(scale * coef[d]);
   }
 }
+}  // namespace
 
 std::vector<Vec3> DiskCoupling::cell_forces(const RotorForceHarmonics& h) const {
-  std::vector<double> f;
-  force_columns(h, f);
+  // F(psi) of thesis 6.5: F = c_0 + sum_k c_k cos(k psi) + s_k sin(k psi), times eps / A
   const std::size_t n = cells_.size();
+  std::vector<double> coef, f(3 * n);
+  pack_coefficients(h, 1.0, coef);
+  lbm::column_series(force_basis_.data(), n, 0, n, kForceColumns, coef.data(), f.data(), n);
   std::vector<Vec3> out(n);
   for (std::size_t c = 0; c < n; ++c) out[c] = Vec3(f[c], f[n + c], f[2 * n + c]);
   return out;
 }
 
-void DiskCoupling::cell_forces(const RotorForceHarmonics& h, double scale, std::vector<float>& out) const {
-  std::vector<double> f;
-  force_columns(h, f);
-  const std::size_t n = cells_.size();
-  out.resize(3 * n);
-  for (std::size_t c = 0; c < n; ++c)
-    for (int d = 0; d < 3; ++d) out[3 * c + d] = static_cast<float>(scale * f[d * n + c]);
+std::vector<float> DiskCoupling::force_columns() const { return std::vector<float>(force_basis_.begin(), force_basis_.end()); }
+
+void DiskCoupling::force_coefficients(const RotorForceHarmonics& h, double scale, std::vector<float>& out) const {
+  pack_coefficients(h, scale, out);
 }
 
 }  // namespace ship_lrm::rotor

@@ -433,6 +433,43 @@ TEST(Forces, ListedCellForcesReachTheBulkPath) {
   EXPECT_NEAR(momentum(s->fields(), 2), 4.5 * F, 1e-3 * 4.5 * F);
 }
 
+// Forces as a sum of per-cell columns (Solver::set_cell_force_columns, the LRM's rotor disk): each
+// cell gets sum_m c_m basis_m[k]. Guo forcing conserves momentum exactly, so in a periodic box at rest
+// the total momentum grows by the sum of those forces per step; changed coefficients move it at the new
+// rate. Bad input is refused before anything is set.
+TEST(Forces, ColumnForcesAreTheSumOfTheColumnsAtEachCell) {
+  const LatticeConfig cfg = periodic_config(16, 12, 10, 0.05f);
+  auto s = make_cpu_solver(Lattice(cfg));
+  const std::vector<std::uint32_t> cells = {static_cast<std::uint32_t>(s->lattice().index(8, 6, 5)),
+                                            static_cast<std::uint32_t>(s->lattice().index(3, 1, 9)),
+                                            static_cast<std::uint32_t>(s->lattice().index(12, 2, 2))};
+  // two columns over three cells (basis[m * 3 + k]) and their coefficients (3 per column)
+  const std::vector<float> basis = {1.0f, 0.5f, 0.25f, 0.0f, -1.0f, 2.0f};
+  const float F = 1e-5f;
+  s->set_cell_force_columns(cells, basis, 2);
+  s->set_cell_force_coefficients({F, 0, -F, 0, F, 0});
+  // x: F (1 + 0.5 + 0.25); y: F (0 - 1 + 2); z: -F (1 + 0.5 + 0.25)
+  const double fx = 1.75 * F, fy = 1.0 * F, fz = -1.75 * F;
+  s->step(10);
+  Fields f = s->fields();  // u with the half-force shift (Guo eq. 20): 10.5 steps of the force
+  EXPECT_NEAR(momentum(f, 0), 10.5 * fx, 1e-3 * 10.5 * std::abs(fx));
+  EXPECT_NEAR(momentum(f, 1), 10.5 * fy, 1e-3 * 10.5 * std::abs(fy));
+  EXPECT_NEAR(momentum(f, 2), 10.5 * fz, 1e-3 * 10.5 * std::abs(fz));
+  s->set_cell_force_coefficients({0, 0, 0, 0, 2 * F, 0});  // y: 2F (0 - 1 + 2), x and z off
+  s->step(10);
+  f = s->fields();
+  EXPECT_NEAR(momentum(f, 0), 10 * fx, 1e-3 * 10 * std::abs(fx));
+  EXPECT_NEAR(momentum(f, 1), 10 * fy + 10.5 * 2 * fy, 1e-3 * 31 * fy);
+  EXPECT_THROW(s->set_cell_force_columns(cells, basis, 3), ConfigError);      // 3 columns need 9 values
+  EXPECT_THROW(s->set_cell_force_columns(cells, basis, 0), ConfigError);      // no column
+  EXPECT_THROW(s->set_cell_force_columns({100000}, {1.0f}, 1), ConfigError);  // no such cell
+  EXPECT_THROW(s->set_cell_force_columns(cells, {1, 1, 1, 1, 1, NAN}, 2), ConfigError);
+  EXPECT_THROW(s->set_cell_force_coefficients({F, 0, 0}), ConfigError);  // 2 columns need 6 values
+  EXPECT_THROW(s->set_cell_force_coefficients({F, 0, 0, 0, INFINITY, 0}), ConfigError);
+  auto fresh = make_cpu_solver(Lattice(cfg));
+  EXPECT_THROW(fresh->set_cell_force_coefficients({F, 0, 0}), ConfigError);  // no columns yet
+}
+
 // In a frame that accelerates at a, every cell feels the fictitious force -rho a (Landau & Lifshitz,
 // Mechanics, eq. 39.7); listed cell forces (the rotor disk's) add to it. Guo forcing conserves
 // momentum exactly, so in a periodic box the total momentum changes by (sum of the field) - M a per

@@ -199,6 +199,34 @@ TEST(CudaBackend, ListedCellForcesAndVelocitiesMatchCpu) {
   }
 }
 
+// The rotor disk's forces as the LRM hands them over (Solver::set_cell_force_columns): the device sums
+// the columns in a kernel with the coefficients as its argument; the host sums the same terms in the
+// same order (column_series.hpp), so the forces and the flows must agree, also after new coefficients.
+TEST(CudaBackend, ColumnForcesMatchCpu) {
+  if (!cuda_available()) GTEST_SKIP() << "no CUDA device: run scripts/gpu_check.sh on a GPU machine";
+  Lattice lat(periodic_config(24, 20, 16, 0.02f));
+  auto cpu = make_cpu_solver(lat);
+  auto gpu = make_cuda_solver(lat);
+  std::vector<std::uint32_t> cells;
+  for (int y = 6; y < 14; ++y)
+    for (int x = 8; x < 16; ++x) cells.push_back(static_cast<std::uint32_t>(lat.index(x, y, 8)));
+  const int columns = 5;
+  std::vector<float> basis(columns * cells.size());
+  for (int m = 0; m < columns; ++m)
+    for (std::size_t k = 0; k < cells.size(); ++k) basis[m * cells.size() + k] = std::cos(0.3f * static_cast<float>(m * k)) / 64.0f;
+  std::vector<float> c = {1e-4f, 0, -0.02f, 0, 2e-3f, 0.02f, -1e-3f, 0, 0, 0, 0, 0.01f, 5e-4f, -5e-4f, 0};
+  for (Solver* s : {cpu.get(), gpu.get()}) {
+    s->set_cell_force_columns(cells, basis, columns);
+    s->set_cell_force_coefficients(c);
+  }
+  compare(*cpu, *gpu, 1, 1e-6);
+  compare(*cpu, *gpu, 19, 1e-5);
+  for (float& v : c) v *= -0.5f;
+  for (Solver* s : {cpu.get(), gpu.get()}) s->set_cell_force_coefficients(c);
+  compare(*cpu, *gpu, 1, 1e-6);
+  compare(*cpu, *gpu, 19, 1e-5);
+}
+
 // What the LRM changes between steps, on a running flow: new face values (the impedance outlet's
 // reference moves, so its outward change is stepped once: Solver::set_boundary_values), a new frame
 // motion, and the listed-cell forces; each followed by single steps of both parities.

@@ -79,6 +79,13 @@ class Solver {
   // Change the force density of some cells (3 values per listed cell), others keep theirs; the
   // first call sets up a zero force field. Only the listed cells are written (and copied to a GPU).
   void set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f);
+  // Forces of listed cells as a sum of per-cell columns (column_series.hpp; the LRM's rotor disk, whose
+  // columns are the harmonics' azimuth functions): the cells and their columns (basis[m * cells.size()
+  // + k], 1 <= columns <= kMaxForceColumns) once, then the columns' coefficients (3 per column) whenever
+  // the forces change. The backend sums where the lattice lives, so on a GPU only the coefficients
+  // cross the bus (a kernel argument). The cells' forces are then as set_cell_forces would set them.
+  void set_cell_force_columns(const std::vector<std::uint32_t>& cells, const std::vector<float>& basis, int columns);
+  void set_cell_force_coefficients(const std::vector<float>& coefficients);
   // Values of the open-boundary cells, 4 per cell in lattice().boundary_cells() order:
   // velocity inlet (ux, uy, uz, -), pressure outlet (rho, -, -, -), impedance outlet (the undisturbed
   // flow's velocity ux, uy, uz there, -). An impedance outlet admits only outgoing waves relative to
@@ -150,6 +157,10 @@ class Solver {
   // Listed cells only (validated): velocities out, force densities in; no whole-field traffic.
   virtual void do_velocities(bool next_odd, const std::vector<std::uint32_t>& cells, std::vector<float>& out) = 0;
   virtual void do_set_cell_forces(const std::vector<std::uint32_t>& cells, const std::vector<float>& f) = 0;
+  // The force columns (validated; default: kept here) and their sum with new coefficients (validated;
+  // default: column_series on the host, then do_set_cell_forces).
+  virtual void do_set_cell_force_columns(const std::vector<std::uint32_t>& cells, const std::vector<float>& basis, int columns);
+  virtual void do_set_cell_force_coefficients(const std::vector<float>& coefficients);
   // change_walls, after the checks: the state (rho, u) of a fluid cell between steps, and adopting
   // `next` with the listed cells (those that left a wall) started at equilibrium with `states`.
   virtual Macro do_cell_state(bool next_odd, std::size_t c);
@@ -158,7 +169,10 @@ class Solver {
   virtual long long do_find_divergent(bool next_odd, float limit) = 0;
 
   Lattice lattice_;
-  std::vector<float> boundary_values_;  // host copy; 4th value of impedance cells: reference change
+  int force_columns_ = 0;                                          // set_cell_force_columns' column count (0: none)
+  std::vector<std::uint32_t> column_cells_;                        // its cells (default do_set_cell_force_columns)
+  std::vector<float> column_basis_, column_sums_, column_forces_;  // its columns; scratch of the host's sum
+  std::vector<float> boundary_values_;                             // host copy; 4th value of impedance cells: reference change
   bool reference_change_pending_ = false;
   bool boundary_values_on_device_ = false;  // a device feed wrote them; boundary_values_ is stale
   bool feed_unchecked_ = false;             // the last device feed's Mach limit not yet checked

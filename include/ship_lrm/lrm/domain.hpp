@@ -257,7 +257,9 @@ class LrmDomain {
   std::vector<bool> wall_moves_;    // per wall: built as a moving wall
   std::size_t wall_cells_ = 0, rebuilds_ = 0, face_restarts_ = 0;
   double wall_seconds_ = 0;
-  std::vector<float> disk_forces_;  // lattice force densities of the disk cells (kept across rebuilds)
+  // The disk cells' forces as the lattice sums them (Solver::set_cell_force_columns): the columns of
+  // DiskCoupling, once per solver, and the last coefficients in lattice units (kept across rebuilds).
+  std::vector<float> disk_force_columns_, disk_force_coefficients_;
   // near_faces: wall cells changed within kClearLayers + 1 layers of a face
   void rebuild(bool carry_flow, bool near_faces = false);
   static constexpr int kClearLayers = 2;   // walls that clear_of_faces() stay out of layers 0 .. kClearLayers - 1

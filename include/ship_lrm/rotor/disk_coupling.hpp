@@ -49,9 +49,15 @@ class DiskCoupling {
   // Force per cell (in the harmonics' units times 1/A: force per cell = F(psi) eps / sum eps), one
   // Vec3 per cells() entry.
   std::vector<Vec3> cell_forces(const RotorForceHarmonics& h) const;
-  // The same times `scale`, as 3 floats per cells() entry (x y z): what the coupled step hands the
-  // lattice every step (scale: newtons per cell to lattice force density).
-  void cell_forces(const RotorForceHarmonics& h, double scale, std::vector<float>& out) const;
+
+  // The same series as the lattice evaluates it (lbm/column_series.hpp, Solver::set_cell_force_columns):
+  // kForceColumns per-cell columns, column m of cell c at [m * cells().size() + c]: eps / A (m = 0),
+  // eps / A cos(k psi) (m = k), eps / A sin(k psi) (m = kHarmonicOrder + k); set once per lattice.
+  static constexpr int kForceColumns = 2 * kHarmonicOrder + 1;
+  std::vector<float> force_columns() const;
+  // Their coefficients for harmonics h times `scale` (newtons per cell to lattice force density), 3 per
+  // column (x y z): what the coupled step hands the lattice every step.
+  void force_coefficients(const RotorForceHarmonics& h, double scale, std::vector<float>& out) const;
 
   // Mean and linear harmonics of a velocity field; velocity(k) returns the velocity of cells()[k].
   template <class VelocityOfCell>
@@ -76,11 +82,9 @@ class DiskCoupling {
  private:
   std::vector<DiskCell> cells_;
   std::vector<std::array<double, 2>> sin_cos_psi_;  // sin psi, cos psi per cell (extract)
-  // F(psi) eps / A as a sum over the harmonics' coefficients of per-cell columns, column m of cell c
-  // at [m * cells + c]: eps / A (m = 0), eps / A cos(k psi) (m = k), eps / A sin(k psi) (m = 9 + k).
-  // Contiguous columns let the sum vectorise across the cells (it runs every coupled step).
+  // F(psi) eps / A as a sum over the harmonics' coefficients of per-cell columns (force_columns()'s
+  // layout, in double). Contiguous columns let the sum vectorise across the cells.
   std::vector<double> force_basis_;
-  void force_columns(const RotorForceHarmonics& h, std::vector<double>& f) const;  // 3 columns x, y, z
   double radius_, area_ = 0;
   double g_inv_[3][3] = {};  // inverse of the eps-weighted normal matrix of (1, (r/R) sin, (r/R) cos)
 };
