@@ -171,6 +171,14 @@ TEST(CpuFields, EqualTheCellByCellStateInEveryForceMode) {
   check("frame forces without a field");
 }
 
+// A square patch of 8 x 8 cells in one layer of a 24 x 20 x 16 lattice: listed cells like the rotor disk's.
+static std::vector<std::uint32_t> disk_like_cells(const Lattice& lat) {
+  std::vector<std::uint32_t> cells;
+  for (int y = 6; y < 14; ++y)
+    for (int x = 8; x < 16; ++x) cells.push_back(static_cast<std::uint32_t>(lat.index(x, y, 8)));
+  return cells;
+}
+
 // The listed-cell exchange the LRM uses every step (rotor-disk forces in, disk velocities out) moves
 // only those cells on the device; it must give what the CPU gives.
 TEST(CudaBackend, ListedCellForcesAndVelocitiesMatchCpu) {
@@ -178,9 +186,7 @@ TEST(CudaBackend, ListedCellForcesAndVelocitiesMatchCpu) {
   Lattice lat(periodic_config(24, 20, 16, 0.02f));
   auto cpu = make_cpu_solver(lat);
   auto gpu = make_cuda_solver(lat);
-  std::vector<std::uint32_t> cells;
-  for (int y = 6; y < 14; ++y)
-    for (int x = 8; x < 16; ++x) cells.push_back(static_cast<std::uint32_t>(lat.index(x, y, 8)));
+  const std::vector<std::uint32_t> cells = disk_like_cells(lat);
   std::vector<float> f(3 * cells.size());
   for (std::size_t k = 0; k < cells.size(); ++k) f[3 * k + 2] = -2e-3f * (1.0f + 0.1f * static_cast<float>(k % 7));
   for (Solver* s : {cpu.get(), gpu.get()}) s->set_cell_forces(cells, f);
@@ -207,9 +213,7 @@ TEST(CudaBackend, ColumnForcesMatchCpu) {
   Lattice lat(periodic_config(24, 20, 16, 0.02f));
   auto cpu = make_cpu_solver(lat);
   auto gpu = make_cuda_solver(lat);
-  std::vector<std::uint32_t> cells;
-  for (int y = 6; y < 14; ++y)
-    for (int x = 8; x < 16; ++x) cells.push_back(static_cast<std::uint32_t>(lat.index(x, y, 8)));
+  const std::vector<std::uint32_t> cells = disk_like_cells(lat);
   const int columns = 5;
   std::vector<float> basis(columns * cells.size());
   for (int m = 0; m < columns; ++m)
