@@ -39,6 +39,13 @@ def loads(bag):
         return [tuple(getattr(m, f) for f in FIELDS) for _, m, _ in b.read_messages(topics=["/rotor/loads"])]
 
 
+def inflows(bag):
+    """The LRM solver's answers: sequence, time and the 9 inflow components of each."""
+    with rosbag.Bag(bag) as b:
+        return [(m.sequence, m.time) + tuple(getattr(getattr(m, v), a) for v in ("mean", "sine", "cosine") for a in "xyz")
+                for _, m, _ in b.read_messages(topics=["/rotor/inflow"])]
+
+
 def main():
     table, work = sys.argv[1], sys.argv[2]
     shutil.rmtree(work, ignore_errors=True)
@@ -54,6 +61,14 @@ def main():
     diff = [(x[0], f) for x, y in zip(a, b) for f, u, v in zip(FIELDS, x, y) if u != v]
     if diff:
         failures.append(f"{len(diff)} fields differ between the runs, first {diff[0][1]} at t = {diff[0][0]:g} s")
+        # where the fluid sides parted: the first answer of the LRM solver that differs (the bag holds them all)
+        ia, ib = inflows(bags[0]), inflows(bags[1])
+        first = next((k for k, (x, y) in enumerate(zip(ia, ib)) if x != y), None)
+        if first is None:
+            failures.append(f"the {len(ia)} and {len(ib)} recorded inflow answers agree")
+        else:
+            failures.append(f"first differing inflow answer: #{first} (request {ia[first][0]} / {ib[first][0]}, t = {ia[first][1]:g} s): "
+                            f"{ia[first][2:5]} against {ib[first][2:5]} m/s (mean)")
     if any(x[-2] != "lrm" or x[-1] for x in a):
         failures.append("not every load came from the LRM")
 
