@@ -65,7 +65,7 @@ def main():
         ia, ib = inflows(bags[0]), inflows(bags[1])
         first = next((k for k, (x, y) in enumerate(zip(ia, ib)) if x != y), None)
         if first is None:
-            failures.append(f"the {len(ia)} and {len(ib)} recorded inflow answers agree")
+            failures.append(f"the first {min(len(ia), len(ib))} of the {len(ia)} and {len(ib)} recorded inflow answers agree")
         else:
             failures.append(f"first differing inflow answer: #{first} (request {ia[first][0]} / {ib[first][0]}, t = {ia[first][1]:g} s): "
                             f"{ia[first][2:5]} against {ib[first][2:5]} m/s (mean)")
