@@ -376,20 +376,20 @@ class CudaSolver final : public Solver {
     check(cudaGetLastError(), "cell forces");
   }
 
-  // The columns stay on the device; each new set of coefficients is one launch.
-  void do_set_cell_force_columns(const std::vector<std::uint32_t>& cells, const std::vector<float>& basis, int columns) override {
-    column_cells_.upload(cells);
-    column_basis_.upload(basis);
-    column_count_ = columns;
+  // The columns stay on the device; each new set of coefficients is one launch (force_columns_: the
+  // column count, set by the base after this call).
+  void do_set_cell_force_columns(const std::vector<std::uint32_t>& cells, const std::vector<float>& basis, int) override {
+    device_column_cells_.upload(cells);
+    device_column_basis_.upload(basis);
   }
   void do_set_cell_force_coefficients(const std::vector<float>& coefficients) override {
     ensure_force_field();
-    const std::size_t n = column_cells_.size();
+    const std::size_t n = device_column_cells_.size();
     if (n == 0) return;
     ColumnCoefficients k{};
     std::copy(coefficients.begin(), coefficients.end(), k.c);
-    column_force_kernel<<<blocks(n), kBlock>>>(force_.data(), lattice_.cells(), column_cells_.data(), n, column_basis_.data(),
-                                               column_count_, k);
+    column_force_kernel<<<blocks(n), kBlock>>>(force_.data(), lattice_.cells(), device_column_cells_.data(), n, device_column_basis_.data(),
+                                               force_columns_, k);
     check(cudaGetLastError(), "cell forces");
   }
 
@@ -542,10 +542,9 @@ class CudaSolver final : public Solver {
   DeviceArray<std::uint32_t> gather_cells_, scatter_cells_;
   std::vector<std::uint32_t> gather_host_, scatter_host_;
   DeviceArray<float> gather_out_, scatter_values_;
-  // the force columns (set_cell_force_columns): cells, columns, column count
-  DeviceArray<std::uint32_t> column_cells_;
-  DeviceArray<float> column_basis_;
-  int column_count_ = 0;
+  // the force columns on the device (set_cell_force_columns): cells and columns
+  DeviceArray<std::uint32_t> device_column_cells_;
+  DeviceArray<float> device_column_basis_;
   unsigned long long* flag_ = nullptr;
   // the gridded field the faces are fed from (feed_from_grid): two frames of a window, and the serial
   // numbers of the windows they were copied from
