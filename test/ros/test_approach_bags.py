@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """Issue 6 acceptance 2 and 6: two simulated-time runs of approach.launch with record:=true, each on its
 own ROS master, give bags whose rotor loads are identical in every field and every sample; the analysis
-script turns such a bag into its plots, its summary and the loads as CSV, matching the bag.
+script turns such a bag into its plots, its summary and the loads as CSV, matching the bag. The bags
+also hold every request of the flight model to the LRM solver and every answer (record_requests:=true):
+when the loads differ, the failure names the first request and the first answer that differ, so that it
+tells which side parted first.
 
     test_approach_bags.py TINY_TABLE.h5 WORK_DIR    (run through the workspace's devel/env.sh)"""
 import csv
@@ -27,7 +30,7 @@ def run_launch(table, bag, log):
     port = free_port()
     env = dict(os.environ, ROS_MASTER_URI=f"http://localhost:{port}")
     args = ["roslaunch", "-p", str(port), "ship_lrm", "approach.launch", f"wake_file:={table}", "backend:=cpu", f"N:={N}",
-            f"duration:={DURATION}", f"startup:={STARTUP}", "start_distance:=10", "height:=5", "record:=true", f"bag:={bag}"]
+            f"duration:={DURATION}", f"startup:={STARTUP}", "start_distance:=10", "height:=5", "record:=true", "record_requests:=true", f"bag:={bag}"]
     with open(log, "w") as f:
         rc = subprocess.run(args, env=env, stdout=f, stderr=subprocess.STDOUT, timeout=300).returncode
     if rc != 0 or not os.path.isfile(bag):
@@ -37,6 +40,32 @@ def run_launch(table, bag, log):
 def loads(bag):
     with rosbag.Bag(bag) as b:
         return [tuple(getattr(m, f) for f in FIELDS) for _, m, _ in b.read_messages(topics=["/rotor/loads"])]
+
+
+def flat(m):
+    """Every number of a message but its header, in field order (vectors and arrays expanded)."""
+    if isinstance(m, (int, float)):
+        return (m,)
+    if isinstance(m, (list, tuple)):
+        return tuple(v for x in m for v in flat(x))
+    return tuple(v for f in m.__slots__ if f != "header" for v in flat(getattr(m, f)))
+
+
+def requests(bag):
+    """The flight model's requests to the LRM solver: sequence, time and every other number of each."""
+    with rosbag.Bag(bag) as b:
+        return [(m.sequence, m.time) + flat(m) for _, m, _ in b.read_messages(topics=["/rotor/forces"])]
+
+
+def first_difference(a, b, what):
+    """Where two recorded series of (sequence, time, ...) part, in words."""
+    k = next((k for k, (x, y) in enumerate(zip(a, b)) if x != y), None)
+    if k is None:
+        return f"the first {min(len(a), len(b))} of the {len(a)} and {len(b)} recorded {what} agree"
+    x, y = a[k], b[k]
+    i = next(i for i, (u, v) in enumerate(zip(x, y)) if u != v) if len(x) == len(y) else None
+    where = f"value {i}: {x[i]!r} against {y[i]!r}" if i is not None else f"{len(x)} against {len(y)} values"
+    return f"first differing {what[:-1]}: #{k} (sequence {x[0]} / {y[0]}, t = {x[1]:g} / {y[1]:g} s), {where}"
 
 
 def inflows(bag):
@@ -61,14 +90,9 @@ def main():
     diff = [(x[0], f) for x, y in zip(a, b) for f, u, v in zip(FIELDS, x, y) if u != v]
     if diff:
         failures.append(f"{len(diff)} fields differ between the runs, first {diff[0][1]} at t = {diff[0][0]:g} s")
-        # where the fluid sides parted: the first answer of the LRM solver that differs (the bag holds them all)
-        ia, ib = inflows(bags[0]), inflows(bags[1])
-        first = next((k for k, (x, y) in enumerate(zip(ia, ib)) if x != y), None)
-        if first is None:
-            failures.append(f"the first {min(len(ia), len(ib))} of the {len(ia)} and {len(ib)} recorded inflow answers agree")
-        else:
-            failures.append(f"first differing inflow answer: #{first} (request {ia[first][0]} / {ib[first][0]}, t = {ia[first][1]:g} s): "
-                            f"{ia[first][2:5]} against {ib[first][2:5]} m/s (mean)")
+        # which side parted first: the flight model's requests or the LRM solver's answers (the bags hold them all)
+        failures.append(first_difference(requests(bags[0]), requests(bags[1]), "requests"))
+        failures.append(first_difference(inflows(bags[0]), inflows(bags[1]), "answers"))
     if any(x[-2] != "lrm" or x[-1] for x in a):
         failures.append("not every load came from the LRM")
 
