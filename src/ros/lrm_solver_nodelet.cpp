@@ -134,6 +134,21 @@ class LrmSolverNodelet : public nodelet::Nodelet {
   ros::Time stamp(double t) const { return epoch_.stamp(t); }
 
   void on_forces(const ship_lrm::RotorForces::ConstPtr& msg) {
+    // A request delivered twice is answered again, not served again. roscpp can deliver every message
+    // of a topic twice within one process: when one nodelet advertises a topic while another
+    // subscribes to it on another thread, both TopicManager::advertise and registerSubscriber may add
+    // an intraprocess link between them (here: the flight model's rotor/forces and this thread's
+    // subscription). Both copies are queued by the same publish, so the copy follows its original at
+    // once. Served twice, every request advanced the fluid twice as far (a bag test failure, session 42).
+    // The header's seq is not compared: a publisher numbers each publish (a request sent again too).
+    if (last_request_ && same_but_seq(*msg, *last_request_)) {
+      ++duplicates_;
+      NODELET_WARN_ONCE(
+          "LrmSolver: a request on %s came twice (sequence %ld); answered again, not served again (counted in the diagnostics)",
+          forces_.getTopic().c_str(), static_cast<long>(msg->sequence));
+      inflow_.publish(last_answer_);
+      return;
+    }
     // real time: ROS time is the wall clock, and the link stamps each request as it sends it
     if (realtime_) remember(delay_ms_, 1e3 * (ros::Time::now() - msg->header.stamp).toSec());
     lrm::InflowRequest r;
@@ -169,6 +184,8 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     answer.header.stamp = stamp(r.state.time);
     answer.header.frame_id = "lrm_domain";
     inflow_.publish(answer);
+    last_request_ = msg;
+    last_answer_ = answer;
     publish_views(r);
     // the updater's period is 1 s of ROS time, which a short simulated run may not see twice: the
     // first request and every 100th publish at once
@@ -176,6 +193,13 @@ class LrmSolverNodelet : public nodelet::Nodelet {
       diagnostics_.force_update();
     else
       diagnostics_.update();
+  }
+
+  static bool same_but_seq(const ship_lrm::RotorForces& a, const ship_lrm::RotorForces& b) {
+    if (a.sequence != b.sequence) return false;  // the usual case, without a copy
+    ship_lrm::RotorForces c = a;
+    c.header.seq = b.header.seq;
+    return c == b;
   }
 
   void publish_views(const lrm::InflowRequest& r) {
@@ -260,6 +284,9 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     stat.add("requests served", served_);
     stat.add("wake table from", wake_source_);
     stat.add("LBM steps", std::lround(fluid_->domain().time() / fluid_->domain().time_step()));
+    stat.add("fluid time (s)", fluid_->domain().time());
+    stat.add("LBM time step (s)", fluid_->domain().time_step());
+    stat.add("duplicate requests (answered again, not served)", duplicates_);
     stat.add("LBM steps dropped to catch up (real time)", fluid_->dropped_steps());
     stat.add("LBM step (ms)", step_ms_);
     stat.add("MLUPS", mlups_);
@@ -295,7 +322,9 @@ class LrmSolverNodelet : public nodelet::Nodelet {
   double slice_interval_ = 0.1, clock_offset_ = 1.0, next_slice_ = 0, step_ms_ = 0, mlups_ = 0, max_mach_ = 0;
   SimEpoch epoch_;
   int slice_normal_ = 1;
-  long served_ = 0;
+  long served_ = 0, duplicates_ = 0;
+  ship_lrm::RotorForces::ConstPtr last_request_;  // the last request served, and its answer
+  ship_lrm::RotorInflow last_answer_;
   bool diverged_ = false;
   std::string failure_;
   std::deque<double> job_ms_, delay_ms_;  // the last kJobWindow jobs served, requests received
