@@ -43,6 +43,7 @@
 #include "ship_lrm/lrm/wall_clock_pacer.hpp"
 #include "ship_lrm/ros/approach_params.hpp"
 #include "ship_lrm/ros/conversions.hpp"
+#include "ship_lrm/ros/duplicate_delivery.hpp"
 #include "ship_lrm/ros/ros_inflow_link.hpp"
 #include "ship_lrm/ros/run_status.hpp"
 #include "ship_lrm/ros/sim_epoch.hpp"
@@ -116,6 +117,11 @@ class FlightModelNodelet : public nodelet::Nodelet {
   void on_begin_write(const std_msgs::String::ConstPtr&) { recorder_ready_ = true; }
 
   void on_pilot(const ship_lrm::PilotControls::ConstPtr& m) {
+    {  // an input delivered twice (duplicate_delivery.hpp) is one input: applied and published once
+      std::lock_guard<std::mutex> lock(pilot_mutex_);
+      if (last_pilot_msg_ && same_message_again(*m, *last_pilot_msg_)) return;
+      last_pilot_msg_ = m;
+    }
     flight::PilotControls c;
     c.collective = m->collective;
     c.longitudinal = m->longitudinal;
@@ -486,6 +492,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
   std::mutex pilot_mutex_;
   flight::PilotControls pilot_controls_;
   ros::Time pilot_msg_stamp_, pilot_stamp_;
+  ship_lrm::PilotControls::ConstPtr last_pilot_msg_;  // the last input taken (a copy delivered twice is not a second)
   bool pilot_new_ = false;
   double lrm_timeout_ = 30, connect_timeout_ = 60, output_interval_ = 0.01, tf_interval_ = 0.02, clock_offset_ = 1.0;
   double next_output_ = 0, next_tf_ = 0, step_wall_s_ = 0;

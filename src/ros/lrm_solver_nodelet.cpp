@@ -33,6 +33,7 @@
 #include "ship_lrm/lrm/realtime_inflow.hpp"
 #include "ship_lrm/ros/approach_params.hpp"
 #include "ship_lrm/ros/conversions.hpp"
+#include "ship_lrm/ros/duplicate_delivery.hpp"
 #include "ship_lrm/ros/run_status.hpp"
 #include "ship_lrm/ros/served_wake_table.hpp"
 #include "ship_lrm/ros/sim_epoch.hpp"
@@ -134,14 +135,9 @@ class LrmSolverNodelet : public nodelet::Nodelet {
   ros::Time stamp(double t) const { return epoch_.stamp(t); }
 
   void on_forces(const ship_lrm::RotorForces::ConstPtr& msg) {
-    // A request delivered twice is answered again, not served again. roscpp can deliver every message
-    // of a topic twice within one process: when one nodelet advertises a topic while another
-    // subscribes to it on another thread, both TopicManager::advertise and registerSubscriber may add
-    // an intraprocess link between them (here: the flight model's rotor/forces and this thread's
-    // subscription). Both copies are queued by the same publish, so the copy follows its original at
-    // once. Served twice, every request advanced the fluid twice as far (a bag test failure, session 42).
-    // The header's seq is not compared: a publisher numbers each publish (a request sent again too).
-    if (last_request_ && same_but_seq(*msg, *last_request_)) {
+    // A request delivered twice (duplicate_delivery.hpp) is answered again, not served again: served
+    // twice, it advanced the fluid twice as far.
+    if (last_request_ && same_message_again(*msg, *last_request_)) {
       ++duplicates_;
       NODELET_WARN_ONCE(
           "LrmSolver: a request on %s came twice (sequence %ld); answered again, not served again (counted in the diagnostics)",
@@ -193,13 +189,6 @@ class LrmSolverNodelet : public nodelet::Nodelet {
       diagnostics_.force_update();
     else
       diagnostics_.update();
-  }
-
-  static bool same_but_seq(const ship_lrm::RotorForces& a, const ship_lrm::RotorForces& b) {
-    if (a.sequence != b.sequence) return false;  // the usual case, without a copy
-    ship_lrm::RotorForces c = a;
-    c.header.seq = b.header.seq;
-    return c == b;
   }
 
   void publish_views(const lrm::InflowRequest& r) {
