@@ -58,14 +58,22 @@ def requests(bag):
 
 
 def first_difference(a, b, what):
-    """Where two recorded series of (sequence, time, ...) part, in words."""
-    k = next((k for k, (x, y) in enumerate(zip(a, b)) if x != y), None)
+    """Where two recorded series of (sequence, time, ...) part, in words. They are matched by sequence
+    number (the first of a sequence's copies), since a recorder may have missed some."""
+    da, db = {}, {}
+    for x in a:
+        da.setdefault(x[0], x)
+    for y in b:
+        db.setdefault(y[0], y)
+    common = sorted(set(da) & set(db))
+    counts = f"{len(a)} and {len(b)} {what} recorded, {len(common)} sequence numbers in both"
+    k = next((k for k in common if da[k] != db[k]), None)
     if k is None:
-        return f"the first {min(len(a), len(b))} of the {len(a)} and {len(b)} recorded {what} agree"
-    x, y = a[k], b[k]
+        return f"{counts}: they agree"
+    x, y = da[k], db[k]
     i = next(i for i, (u, v) in enumerate(zip(x, y)) if u != v) if len(x) == len(y) else None
     where = f"value {i}: {x[i]!r} against {y[i]!r}" if i is not None else f"{len(x)} against {len(y)} values"
-    return f"first differing {what[:-1]}: #{k} (sequence {x[0]} / {y[0]}, t = {x[1]:g} / {y[1]:g} s), {where}"
+    return f"{counts}; first differing {what[:-1]}: sequence {k} (t = {x[1]:g} / {y[1]:g} s), {where}"
 
 
 def inflows(bag):
