@@ -72,6 +72,7 @@ class FlightModelNodelet : public nodelet::Nodelet {
       pnh.param("clock_offset", clock_offset_, 1.0);
       pnh.param("wait_for_loads_subscribers", wait_for_subscribers_, 0);
       pnh.param("wait_for_recorder", wait_for_recorder_, false);
+      pnh.param("request_subscribers", request_subscribers_, 1);
       pnh.param("min_step_wall", min_step_wall_, 0.0);
       if (!(min_step_wall_ >= 0.0 && min_step_wall_ <= 1.0))
         throw ParamError("parameter " + pnh.resolveName("min_step_wall") + " must lie in [0, 1] s, got " + std::to_string(min_step_wall_));
@@ -220,6 +221,9 @@ class FlightModelNodelet : public nodelet::Nodelet {
       NODELET_ERROR("FlightModel: no LRM solver on %s within %g s; flying on Pitt-Peters",
                     getNodeHandle().resolveName("rotor/forces").c_str(), connect_timeout_);
       link_->set_timeout(1e-3);
+    } else if (link_ && request_subscribers_ > 1 && !link_->wait_for_request_subscribers(request_subscribers_, connect_timeout_)) {
+      NODELET_WARN("FlightModel: fewer than %d subscribers on %s after %g s (a recorder?); starting, a bag may miss the first requests",
+                   request_subscribers_, getNodeHandle().resolveName("rotor/forces").c_str(), connect_timeout_);
     }
     try {
       std::optional<lrm::RealTimeMode> rt;
@@ -492,7 +496,9 @@ class FlightModelNodelet : public nodelet::Nodelet {
   std::mutex pilot_mutex_;
   flight::PilotControls pilot_controls_;
   ros::Time pilot_msg_stamp_, pilot_stamp_;
-  ship_lrm::PilotControls::ConstPtr last_pilot_msg_;  // the last input taken (a copy delivered twice is not a second)
+  ship_lrm::PilotControls::ConstPtr last_pilot_msg_;
+  int request_subscribers_ =
+      1;  // rotor/forces: the solver, and a recorder (record_requests)  // the last input taken (a copy delivered twice is not a second)
   bool pilot_new_ = false;
   double lrm_timeout_ = 30, connect_timeout_ = 60, output_interval_ = 0.01, tf_interval_ = 0.02, clock_offset_ = 1.0;
   double next_output_ = 0, next_tf_ = 0, step_wall_s_ = 0;

@@ -68,6 +68,7 @@ class LrmSolverNodelet : public nodelet::Nodelet {
       if (cfg_.inflow != "lrm")
         NODELET_WARN("LrmSolver: approach/inflow is %s; the flight model will not ask for the LRM", cfg_.inflow.c_str());
       pnh.param("realtime", realtime_, false);
+      pnh.param("answer_subscribers", answer_subscribers_, 1);
       if (wake_source_ == "file") start(nullptr);
     } catch (const std::exception& e) {
       fail(e.what());
@@ -146,6 +147,7 @@ class LrmSolverNodelet : public nodelet::Nodelet {
       inflow_.publish(last_answer_);
       return;
     }
+    if (served_ == 0) wait_for_answer_subscribers();
     // real time: ROS time is the wall clock, and the link stamps each request as it sends it
     if (realtime_) remember(delay_ms_, 1e3 * (ros::Time::now() - msg->header.stamp).toSec());
     lrm::InflowRequest r;
@@ -191,6 +193,22 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     else
       diagnostics_.update();
   }
+
+  // Before the first answer: until answer_subscribers take rotor/inflow (the flight model and a
+  // recorder), at most kAnswerWait s. A recorder connects to this publisher on its own time, and a bag
+  // missed the burst of answers at t = 0 (16 of 566) when the first request came before it.
+  void wait_for_answer_subscribers() {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(kAnswerWait);
+    while (static_cast<int>(inflow_.getNumSubscribers()) < answer_subscribers_ && !stop_ && ros::ok()) {
+      if (std::chrono::steady_clock::now() >= until) {
+        NODELET_WARN("LrmSolver: only %u of %d subscribers on %s after %g s (a recorder?); answering, a bag may miss answers",
+                     inflow_.getNumSubscribers(), answer_subscribers_, inflow_.getTopic().c_str(), kAnswerWait);
+        return;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  }
+  static constexpr double kAnswerWait = 10.0;  // s (wall clock); less than the flight model's lrm_timeout (30 s)
 
   void publish_views(const lrm::InflowRequest& r) {
     const ros::Time now = stamp(r.state.time);
@@ -313,6 +331,7 @@ class LrmSolverNodelet : public nodelet::Nodelet {
   SimEpoch epoch_;
   int slice_normal_ = 1;
   long served_ = 0, duplicates_ = 0;
+  int answer_subscribers_ = 1;                    // rotor/inflow: the flight model, and a recorder
   ship_lrm::RotorForces::ConstPtr last_request_;  // the last request served, and its answer
   ship_lrm::RotorInflow last_answer_;
   bool diverged_ = false;

@@ -30,6 +30,19 @@ bool RosInflowLink::wait_for_solver(double timeout_s) {
   return false;
 }
 
+bool RosInflowLink::wait_for_request_subscribers(int count, double timeout_s) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (static_cast<int>(forces_.getNumSubscribers()) < count) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (cancelled_) return false;
+    }
+    if (!ros::ok() || std::chrono::steady_clock::now() >= until) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return true;
+}
+
 void RosInflowLink::on_inflow(const ship_lrm::RotorInflow::ConstPtr& msg) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (msg->sequence != waiting_for_) return;  // a late answer to a request given up on

@@ -23,6 +23,9 @@ class RosInflowLink final : public lrm::InflowLink {
   RosInflowLink(ros::NodeHandle& nh, double timeout_s);
   // Waits (wall clock) until the solver is connected both ways; false after `timeout_s`.
   bool wait_for_solver(double timeout_s);
+  // Waits (wall clock) until `count` subscribers take rotor/forces (the solver and a recorder); false
+  // after `timeout_s`.
+  bool wait_for_request_subscribers(int count, double timeout_s);
   rotor::RotorInflow exchange(const lrm::InflowRequest& request) override;
   void set_timeout(double seconds) { timeout_s_ = seconds; }
   // Ends a wait in progress (within kCancelPoll) and every later one with LinkLost (the nodelet is
