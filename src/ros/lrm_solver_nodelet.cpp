@@ -122,7 +122,8 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     NODELET_INFO("LrmSolver: N = %d, a = %g, %d^3 cells, %s, LBM step %.3f ms, wake table from %s", d.config().nodes, d.config().reach,
                  d.cells_per_edge(), fluid_->domain().solver().backend_name(), 1e3 * d.time_step(),
                  wake_source_ == "file" ? "the file" : "the wake server");
-    // a deep queue for a recorder: the requests at t = 0 come in a burst, and a bag lost 16 of 566 answers with 4
+    // a deep queue, so that a recorder held up by the burst of answers at t = 0 keeps them all (the 16 answers
+    // a bag once missed were lost before the recorder connected: wait_for_answer_subscribers)
     inflow_ = nh.advertise<ship_lrm::RotorInflow>("rotor/inflow", 1000);
     slice_ = nh.advertise<sensor_msgs::PointCloud2>("lrm/slice", 2);
     box_ = nh.advertise<visualization_msgs::Marker>("lrm/domain", 2, true);

@@ -11,7 +11,7 @@
 namespace ship_lrm::ros_layer {
 
 RosInflowLink::RosInflowLink(ros::NodeHandle& nh, double timeout_s) : timeout_s_(timeout_s) {
-  forces_ = nh.advertise<ship_lrm::RotorForces>("rotor/forces", 1000);  // deep for a recorder (a burst at t = 0)
+  forces_ = nh.advertise<ship_lrm::RotorForces>("rotor/forces", 1000);  // deep: a recorder held up by the burst at t = 0 keeps it
   ros::NodeHandle own(nh);
   own.setCallbackQueue(&answers_);
   inflow_ = own.subscribe("rotor/inflow", 4, &RosInflowLink::on_inflow, this, ros::TransportHints().tcpNoDelay());
