@@ -496,9 +496,8 @@ class FlightModelNodelet : public nodelet::Nodelet {
   std::mutex pilot_mutex_;
   flight::PilotControls pilot_controls_;
   ros::Time pilot_msg_stamp_, pilot_stamp_;
-  ship_lrm::PilotControls::ConstPtr last_pilot_msg_;
-  int request_subscribers_ =
-      1;  // rotor/forces: the solver, and a recorder (record_requests)  // the last input taken (a copy delivered twice is not a second)
+  ship_lrm::PilotControls::ConstPtr last_pilot_msg_;  // the last input taken (a copy delivered twice is not a second)
+  int request_subscribers_ = 1;                       // rotor/forces: the solver, and a recorder (record_requests)
   bool pilot_new_ = false;
   double lrm_timeout_ = 30, connect_timeout_ = 60, output_interval_ = 0.01, tf_interval_ = 0.02, clock_offset_ = 1.0;
   double next_output_ = 0, next_tf_ = 0, step_wall_s_ = 0;
