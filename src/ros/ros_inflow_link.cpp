@@ -17,30 +17,26 @@ RosInflowLink::RosInflowLink(ros::NodeHandle& nh, double timeout_s) : timeout_s_
   inflow_ = own.subscribe("rotor/inflow", 4, &RosInflowLink::on_inflow, this, ros::TransportHints().tcpNoDelay());
 }
 
-bool RosInflowLink::wait_for_solver(double timeout_s) {
+template <class Ready>
+bool RosInflowLink::wait_until(Ready ready, double timeout_s) {
   const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   while (ros::ok() && std::chrono::steady_clock::now() < until) {
-    if (forces_.getNumSubscribers() > 0 && inflow_.getNumPublishers() > 0) return true;
+    if (ready()) return true;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       if (cancelled_) return false;
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   return false;
 }
 
+bool RosInflowLink::wait_for_solver(double timeout_s) {
+  return wait_until([this] { return forces_.getNumSubscribers() > 0 && inflow_.getNumPublishers() > 0; }, timeout_s);
+}
+
 bool RosInflowLink::wait_for_request_subscribers(int count, double timeout_s) {
-  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
-  while (static_cast<int>(forces_.getNumSubscribers()) < count) {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (cancelled_) return false;
-    }
-    if (!ros::ok() || std::chrono::steady_clock::now() >= until) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  return true;
+  return wait_until([this, count] { return static_cast<int>(forces_.getNumSubscribers()) >= count; }, timeout_s);
 }
 
 void RosInflowLink::on_inflow(const ship_lrm::RotorInflow::ConstPtr& msg) {

@@ -3,8 +3,9 @@
 own ROS master, give bags whose rotor loads are identical in every field and every sample; the analysis
 script turns such a bag into its plots, its summary and the loads as CSV, matching the bag. The bags
 also hold every request of the flight model to the LRM solver and every answer from t = 0
-(record_requests:=true; the solver and the flight model wait for the recorder): when the loads differ, the failure names the first request and the first answer that differ, so that it
-tells which side parted first.
+(record_requests:=true; the solver and the flight model wait for the recorder): when the loads differ,
+the failure names the first request and the first answer that differ, so that it tells which side
+parted first.
 
     test_approach_bags.py TINY_TABLE.h5 WORK_DIR    (run through the workspace's devel/env.sh)"""
 import csv
@@ -103,7 +104,7 @@ def main():
         failures.append(first_difference(inflows(bags[0]), inflows(bags[1]), "answers"))
     for bag in bags:  # every request and every answer from t = 0 (the solver and the flight model wait for the recorder)
         sent, answered = [r[0] for r in requests(bag)], {x[0] for x in inflows(bag)}
-        if sent != list(range(len(sent))) or answered != set(sent):
+        if not sent or sent != list(range(len(sent))) or answered != set(sent):
             failures.append(f"{os.path.basename(bag)} misses requests or answers: {len(sent)} requests "
                             f"(sequence numbers {'' if sent == list(range(len(sent))) else 'not '}0, 1, ...), "
                             f"answers to {len(answered & set(sent))} of them")

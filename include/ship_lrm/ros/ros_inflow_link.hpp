@@ -35,8 +35,11 @@ class RosInflowLink final : public lrm::InflowLink {
 
  private:
   void on_inflow(const ship_lrm::RotorInflow::ConstPtr& msg);  // in exchange()'s thread
-  static constexpr double kCancelPoll = 0.05;                  // s: longest wait between checks of cancel()
-  ros::CallbackQueue answers_;                                 // before inflow_: outlives the subscription
+  // Polls ready() every 10 ms (wall clock) until it holds (true), or cancel() or `timeout_s` (false).
+  template <class Ready>
+  bool wait_until(Ready ready, double timeout_s);
+  static constexpr double kCancelPoll = 0.05;  // s: longest wait between checks of cancel()
+  ros::CallbackQueue answers_;                 // before inflow_: outlives the subscription
   ros::Publisher forces_;
   ros::Subscriber inflow_;
   double timeout_s_;
