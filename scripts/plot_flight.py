@@ -5,6 +5,7 @@ usage: plot_flight.py trim TRIM.csv OUT.png [--reference MEASURED.csv]
        plot_flight.py doublet DOUBLET.csv OUT.png
        plot_flight.py sweep_inflow INFLOW_SWEEP.csv OUT.png
        plot_flight.py sweep_ground GROUND_SWEEP.csv OUT.png
+       plot_flight.py sweep_free_wake FREE_WAKE_SWEEP.csv OUT.png [--reference INFLOW_SWEEP.csv]
        plot_flight.py plane PLANE.csv OUT.png
 
 trim: power, the four controls and the attitudes over speed, laid out like thesis figs. 8.5-8.7.
@@ -16,6 +17,8 @@ momentum-theory velocity (thesis figs. 8.1, 8.2).
 sweep_ground: hover, v_mean / v_mean(OGE) over z/R beside Cheeseman-Bennett and Hayden (fig. 8.9);
 forward, v_mean over speed per height beside Glauert times the forward-flight Cheeseman-Bennett
 factor (fig. 8.11), and the ratio v_mean / v_mean(OGE) over speed beside Cheeseman-Bennett.
+sweep_free_wake: the free vortex-ring wake's mean induced velocity over speed beside Glauert's, with
+an LRM `sweep inflow` CSV as the reference if given.
 plane: a sweep case's time-averaged x-z plane through the hub (`--planes`), or the approach's
 (`--plane-mean-from`) beside the wake table's air at the same points and their difference.
 """
@@ -126,6 +129,31 @@ def plot_sweep_inflow(data, out):
     fig.savefig(out, dpi=110)
 
 
+def plot_sweep_free_wake(data, out, lrm):
+    v = data["speed_m_s"]
+    vh = data["hover_momentum_theory_m_s"][0]
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
+    axes[0].plot(v, [x / vh for x in data["free_wake_mean_m_s"]], "s-", label="free vortex-ring wake")
+    axes[0].plot(v, [x / vh for x in data["momentum_theory_m_s"]], "-", color="k", label="Glauert")
+    axes[1].plot(v, data["mean_over_momentum_theory"], "s-", label="free vortex-ring wake")
+    if lrm:
+        label = f"LRM N = {int(lrm['N'][0])}, a = {lrm['reach'][0]:g}"
+        axes[0].plot(lrm["speed_m_s"], [x / vh for x in lrm["lrm_mean_m_s"]], "o-", label=label)
+        axes[1].plot(lrm["speed_m_s"], [m / g for m, g in zip(lrm["lrm_mean_m_s"], lrm["momentum_theory_m_s"])], "o-", label=label)
+    axes[1].axhline(1.0, color="k", lw=1)
+    for y in (0.95, 1.05):
+        axes[1].axhline(y, color="k", lw=0.5, ls=":")
+    axes[0].set_ylabel("mean induced velocity / v_h")
+    axes[1].set_ylabel("mean induced velocity / Glauert")
+    for ax in axes:
+        ax.set_xlabel("speed [m/s]")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle(f"Uniformly loaded actuator disk, zero incidence; v_h = {vh:.2f} m/s")
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
 def plot_sweep_ground(data, out):
     label = f"LRM N = {int(data['N'][0])}, a = {data['reach'][0]:g}"
     hover = all(v == 0 for v in data["speed_m_s"])
@@ -220,7 +248,7 @@ def plot_plane(path, out):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("kind", choices=["trim", "doublet", "sweep_inflow", "sweep_ground", "plane"])
+    ap.add_argument("kind", choices=["trim", "doublet", "sweep_inflow", "sweep_ground", "sweep_free_wake", "plane"])
     ap.add_argument("csv")
     ap.add_argument("png")
     ap.add_argument("--reference")
@@ -234,6 +262,8 @@ def main():
         plot_doublet(data, a.png)
     elif a.kind == "sweep_ground":
         plot_sweep_ground(data, a.png)
+    elif a.kind == "sweep_free_wake":
+        plot_sweep_free_wake(data, a.png, read(a.reference) if a.reference else None)
     else:
         plot_sweep_inflow(data, a.png)
 

@@ -195,7 +195,9 @@ std::function<int()> add_sweep_command(CLI::App& app) {
   inflow->add_option("--speeds", o->speeds, "speeds in m/s: start:step:stop or a comma list")->capture_default_str();
   o->add_to(*inflow, "inflow_sweep.csv, .png");
   auto run_ground = add_ground_sweep(*sweep);
-  return [o, inflow, run_ground]() -> int {
+  auto run_free_wake = add_free_wake_sweep(*sweep);
+  return [o, inflow, run_ground, run_free_wake]() -> int {
+    if (const int r = run_free_wake(); r >= 0) return r;
     if (!inflow->parsed()) return run_ground();
     const auto speeds = parse_speeds(o->speeds);
     const lrm::LrmConfig cfg = o->config();

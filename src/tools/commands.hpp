@@ -25,6 +25,8 @@ std::function<int()> add_doublet_command(CLI::App& app);
 std::function<int()> add_sweep_command(CLI::App& app);
 std::function<int()> add_wake_command(CLI::App& app);
 std::function<int()> add_approach_command(CLI::App& app);
+// `sweep free-wake` (cmd_sweep_free_wake.cpp), registered by add_sweep_command.
+std::function<int()> add_free_wake_sweep(CLI::App& sweep);
 // Where `ship_lrm wake --preset default` keeps its table: $SHIP_LRM_WAKE_CACHE or ~/.cache/ship_lrm.
 
 // Shared by the sweep commands (cmd_flight.cpp):
