@@ -109,6 +109,16 @@ def plot_doublet(data, out):
     fig.savefig(out, dpi=100)
 
 
+def finish_speed_panels(fig, axes, title, out):
+    for ax in axes:
+        ax.set_xlabel("speed [m/s]")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
 def plot_sweep_inflow(data, out):
     v = data["speed_m_s"]
     vh = data["hover_momentum_theory_m_s"][0]
@@ -120,13 +130,7 @@ def plot_sweep_inflow(data, out):
     axes[1].plot(v, [x / vh for x in data["lrm_cosine_m_s"]], "o-", label=label)
     axes[1].plot(v, [x / vh for x in data["pitt_peters_cosine_m_s"]], "-", color="k", label="Pitt-Peters")
     axes[1].set_ylabel("cosine inflow / v_h")
-    for ax in axes:
-        ax.set_xlabel("speed [m/s]")
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8)
-    fig.suptitle(f"Isolated rotor, uniform thrust, zero incidence (cf. thesis figs. 8.1, 8.2); v_h = {vh:.2f} m/s")
-    fig.tight_layout()
-    fig.savefig(out, dpi=110)
+    finish_speed_panels(fig, axes, f"Isolated rotor, uniform thrust, zero incidence (cf. thesis figs. 8.1, 8.2); v_h = {vh:.2f} m/s", out)
 
 
 def plot_sweep_free_wake(data, out, lrm):
@@ -145,13 +149,7 @@ def plot_sweep_free_wake(data, out, lrm):
         axes[1].axhline(y, color="k", lw=0.5, ls=":")
     axes[0].set_ylabel("mean induced velocity / v_h")
     axes[1].set_ylabel("mean induced velocity / Glauert")
-    for ax in axes:
-        ax.set_xlabel("speed [m/s]")
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8)
-    fig.suptitle(f"Uniformly loaded actuator disk, zero incidence; v_h = {vh:.2f} m/s")
-    fig.tight_layout()
-    fig.savefig(out, dpi=110)
+    finish_speed_panels(fig, axes, f"Uniformly loaded actuator disk, zero incidence; v_h = {vh:.2f} m/s", out)
 
 
 def plot_sweep_ground(data, out):

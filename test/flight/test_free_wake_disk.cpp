@@ -32,9 +32,9 @@ TEST(FreeWakeDisk, InAClimbTheMeanInducedVelocityIsMomentumTheorys) {
 }
 
 TEST(FreeWakeDisk, InFastEdgewiseFlightTheMeanInducedVelocityIsGlauertsLimit) {
-  auto c = coarse(Vec3(-4.0, 0, 0));  // V = 4 v_h: mu about 0.2 for the Bo 105
+  auto c = coarse(Vec3(-4.0, 0, 0));     // V = 4 v_h: mu about 0.2 for the Bo 105
   set_wake_lengths(c, 0.05, 10.0, 2.0);  // rings 0.05 R apart (the core) along the faster wake, 10 R of it
-  c.settle = 0.5, c.average = 0.5;      // it passes the disk in 0.5 R / v_h
+  c.settle = 0.5, c.average = 0.5;       // it passes the disk in 0.5 R / v_h
   const auto r = solve_free_wake_disk(c);
   const double prandtl = r.hover / 4.0;           // T / (2 rho A V) = v_h^2 / V
   EXPECT_NEAR(r.momentum / prandtl, 1.0, 0.005);  // Glauert's formula is within 0.3 % of its limit there
