@@ -14,8 +14,10 @@
 // straight segment A has a closed form), so no ring ever has to be evaluated on the disk itself.
 //
 // What it answers: the mean induced velocity of the same actuator disk the LRM resolves (uniform
-// thrust, no blades, no viscosity) in any steady flight state, in particular in the transition
-// regime (edgewise speed comparable with v_h) where Glauert's formula is a hypothesis, not a result.
+// thrust, no blades, no viscosity) in level flight and climbs, in particular in the transition regime
+// (edgewise speed comparable with v_h) where Glauert's formula is a hypothesis, not a result. There
+// the wake rolls up and the answer still falls with each refinement of step and core at the
+// resolutions reached on a 2-core CPU (docs/benchmarks.md, session 43): read it with its resolution.
 // Exact references it meets (test/flight/test_free_wake_disk.cpp): in axial flow the mean induced
 // velocity of a uniformly loaded disk is momentum theory's (Froude: the disk's mean velocity is the
 // mean of the far upstream and far wake velocities, exact for uniform loading); in fast edgewise flight
