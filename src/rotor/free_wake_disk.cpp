@@ -21,7 +21,7 @@ struct Ring {
 
 // The wake's segments in flat arrays, for a vectorisable Biot-Savart loop.
 struct Segments {
-  std::vector<double> ax, ay, az, lx, ly, lz, gamma;
+  std::vector<double> ax, ay, az, lx, ly, lz, l2, gamma;  // l2 = |l|^2
 
   explicit Segments(const std::vector<Ring>& rings) {
     for (const auto& r : rings) {
@@ -30,7 +30,7 @@ struct Segments {
         const Vec3& a = r.node[i];
         const Vec3 l = r.node[(i + 1) % m] - a;
         ax.push_back(a.x()), ay.push_back(a.y()), az.push_back(a.z());
-        lx.push_back(l.x()), ly.push_back(l.y()), lz.push_back(l.z());
+        lx.push_back(l.x()), ly.push_back(l.y()), lz.push_back(l.z()), l2.push_back(l.squaredNorm());
         gamma.push_back(r.circulation / (4.0 * M_PI));
       }
     }
@@ -47,8 +47,7 @@ struct Segments {
       const double r1x = p.x() - ax[i], r1y = p.y() - ay[i], r1z = p.z() - az[i];
       const double r2x = r1x - lx[i], r2y = r1y - ly[i], r2z = r1z - lz[i];
       const double n1 = std::sqrt(r1x * r1x + r1y * r1y + r1z * r1z), n2 = std::sqrt(r2x * r2x + r2y * r2y + r2z * r2z);
-      const double l2 = lx[i] * lx[i] + ly[i] * ly[i] + lz[i] * lz[i];
-      const double den = n1 * n2 * (n1 * n2 + r1x * r2x + r1y * r2y + r1z * r2z) + eps2 * l2;
+      const double den = n1 * n2 * (n1 * n2 + r1x * r2x + r1y * r2y + r1z * r2z) + eps2 * l2[i];
       const double f = den > 1e-300 ? gamma[i] * (n1 + n2) / den : 0.0;
       ux += f * (r1y * r2z - r1z * r2y);
       uy += f * (r1z * r2x - r1x * r2z);
@@ -64,7 +63,7 @@ struct Segments {
     double ax_ = 0, ay_ = 0, az_ = 0;
     const std::size_t n = gamma.size();
     for (std::size_t i = 0; i < n; ++i) {
-      const double len = std::sqrt(lx[i] * lx[i] + ly[i] * ly[i] + lz[i] * lz[i]);
+      const double len = std::sqrt(l2[i]);
       const double tx = lx[i] / len, ty = ly[i] / len, tz = lz[i] / len;
       const double rx = p.x() - ax[i], ry = p.y() - ay[i], rz = p.z() - az[i];
       const double s0 = rx * tx + ry * ty + rz * tz;
@@ -156,7 +155,7 @@ void set_wake_lengths(FreeWakeDiskConfig& c, double spacing, double length, doub
   c.merge_age = merge_length / speed;
 }
 
-FreeWakeDiskResult solve_free_wake_disk(const FreeWakeDiskConfig& c, const std::function<void(const FreeWakeDiskSample&)>& progress) {
+FreeWakeDiskResult solve_free_wake_disk(const FreeWakeDiskConfig& c) {
   check(c);
   FreeWakeDiskResult res;
   res.hover = hover_induced_velocity(c.thrust, c.density, c.radius);
@@ -213,7 +212,6 @@ FreeWakeDiskResult solve_free_wake_disk(const FreeWakeDiskConfig& c, const std::
       const double t = step * dt;
       const FreeWakeDiskSample s{t * c.radius / res.hover, disk_mean(Segments(rings), c.edge_points) * res.hover};
       res.history.push_back(s);
-      if (progress) progress(s);
       if (t >= t_avg) {
         sum += s.mean, ++count;
         res.min = std::min(res.min, s.mean), res.max = std::max(res.max, s.mean);
@@ -224,7 +222,6 @@ FreeWakeDiskResult solve_free_wake_disk(const FreeWakeDiskConfig& c, const std::
   res.mean = count > 0 ? sum / count : res.history.back().mean;
   if (count == 0) res.min = res.max = res.mean;
   res.rings = static_cast<int>(rings.size());
-  res.nodes = res.rings * m;
   return res;
 }
 

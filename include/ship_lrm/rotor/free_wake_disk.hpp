@@ -25,7 +25,6 @@
 // lifting-line theory), Glauert's limit.
 #pragma once
 
-#include <functional>
 #include <vector>
 
 #include "ship_lrm/rotor/inflow_model.hpp"
@@ -61,7 +60,7 @@ struct FreeWakeDiskResult {
   double min = 0.0, max = 0.0;  // its range over the averaging window
   double momentum = 0.0;        // momentum theory's (Glauert's) value for the same state, m/s
   double hover = 0.0;           // v_h, m/s
-  int rings = 0, nodes = 0;     // the wake at the end
+  int rings = 0;                // the wake at the end
   long steps = 0;
   std::vector<FreeWakeDiskSample> history;  // every sample taken
 };
@@ -73,11 +72,9 @@ struct FreeWakeDiskResult {
 void set_wake_lengths(FreeWakeDiskConfig& config, double spacing, double length, double merge_length);
 
 // Runs the wake from the impulsive start to settle + average after the wake has reached its full
-// age (simulated time wake_age + settle + average, in R / v_h). progress (optional) is called with each
-// sample. Throws std::invalid_argument for bad input (non-positive dimensions or thrust, fewer than 8
-// ring points, a step, core or wake age out of range, or a descent: air passing the disk against the
-// induced flow, air z < 0, where the vortex-ring and windmill states have no steady wake to converge).
-FreeWakeDiskResult solve_free_wake_disk(const FreeWakeDiskConfig& config,
-                                        const std::function<void(const FreeWakeDiskSample&)>& progress = {});
+// age (simulated time wake_age + settle + average, in R / v_h). Throws std::invalid_argument for bad input (non-positive dimensions or
+// thrust, fewer than 8 ring points, a step, core or wake age out of range, or a descent: air passing the disk against the induced flow, air
+// z < 0, where the vortex-ring and windmill states have no steady wake to converge).
+FreeWakeDiskResult solve_free_wake_disk(const FreeWakeDiskConfig& config);
 
 }  // namespace ship_lrm::rotor
