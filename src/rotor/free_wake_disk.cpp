@@ -19,9 +19,12 @@ struct Ring {
   int level;  // merged from 2^level shed rings
 };
 
-// The wake's segments in flat arrays, for a vectorisable Biot-Savart loop.
+// The wake's segments in flat arrays, for vectorisable loops: single precision for the convection's
+// O(n^2) Biot-Savart sum (its rounding, 1e-7 of a distance of order R, is far below the core), double
+// for the flux through the disk.
 struct Segments {
-  std::vector<double> ax, ay, az, lx, ly, lz, l2, gamma;  // l2 = |l|^2
+  std::vector<float> fax, fay, faz, flx, fly, flz, fl2, fgamma;  // l2 = |l|^2, gamma = Gamma / (4 pi)
+  std::vector<double> ax, ay, az, lx, ly, lz, gamma;
 
   explicit Segments(const std::vector<Ring>& rings) {
     for (const auto& r : rings) {
@@ -29,9 +32,12 @@ struct Segments {
       for (std::size_t i = 0; i < m; ++i) {
         const Vec3& a = r.node[i];
         const Vec3 l = r.node[(i + 1) % m] - a;
+        const double g = r.circulation / (4.0 * M_PI);
         ax.push_back(a.x()), ay.push_back(a.y()), az.push_back(a.z());
-        lx.push_back(l.x()), ly.push_back(l.y()), lz.push_back(l.z()), l2.push_back(l.squaredNorm());
-        gamma.push_back(r.circulation / (4.0 * M_PI));
+        lx.push_back(l.x()), ly.push_back(l.y()), lz.push_back(l.z()), gamma.push_back(g);
+        fax.push_back(static_cast<float>(a.x())), fay.push_back(static_cast<float>(a.y())), faz.push_back(static_cast<float>(a.z()));
+        flx.push_back(static_cast<float>(l.x())), fly.push_back(static_cast<float>(l.y())), flz.push_back(static_cast<float>(l.z()));
+        fl2.push_back(static_cast<float>(l.squaredNorm())), fgamma.push_back(static_cast<float>(g));
       }
     }
   }
@@ -40,15 +46,20 @@ struct Segments {
   // u = Gamma / (4 pi) (|r1| + |r2|) (r1 x r2) / (|r1| |r2| (|r1| |r2| + r1.r2) + eps^2 |l|^2)
   // (van Garrel 2003, ECN-C--03-079: the exact segment for eps = 0, finite on the filament).
   Vec3 velocity(const Vec3& p, double eps2) const {
-    double ux = 0, uy = 0, uz = 0;
-    const std::size_t n = gamma.size();
+    const float px = static_cast<float>(p.x()), py = static_cast<float>(p.y()), pz = static_cast<float>(p.z());
+    const float e2 = static_cast<float>(eps2);
+    const float* __restrict x = fax.data(), * __restrict y = fay.data(), * __restrict z = faz.data();
+    const float* __restrict dx = flx.data(), * __restrict dy = fly.data(), * __restrict dz = flz.data();
+    const float* __restrict l2 = fl2.data(), * __restrict g = fgamma.data();
+    float ux = 0, uy = 0, uz = 0;
+    const std::size_t n = fgamma.size();
 #pragma omp simd reduction(+ : ux, uy, uz)
     for (std::size_t i = 0; i < n; ++i) {
-      const double r1x = p.x() - ax[i], r1y = p.y() - ay[i], r1z = p.z() - az[i];
-      const double r2x = r1x - lx[i], r2y = r1y - ly[i], r2z = r1z - lz[i];
-      const double n1 = std::sqrt(r1x * r1x + r1y * r1y + r1z * r1z), n2 = std::sqrt(r2x * r2x + r2y * r2y + r2z * r2z);
-      const double den = n1 * n2 * (n1 * n2 + r1x * r2x + r1y * r2y + r1z * r2z) + eps2 * l2[i];
-      const double f = den > 1e-300 ? gamma[i] * (n1 + n2) / den : 0.0;
+      const float r1x = px - x[i], r1y = py - y[i], r1z = pz - z[i];
+      const float r2x = r1x - dx[i], r2y = r1y - dy[i], r2z = r1z - dz[i];
+      const float n1 = std::sqrt(r1x * r1x + r1y * r1y + r1z * r1z), n2 = std::sqrt(r2x * r2x + r2y * r2y + r2z * r2z);
+      const float den = n1 * n2 * (n1 * n2 + r1x * r2x + r1y * r2y + r1z * r2z) + e2 * l2[i];
+      const float f = den > 1e-30f ? g[i] * (n1 + n2) / den : 0.0f;
       ux += f * (r1y * r2z - r1z * r2y);
       uy += f * (r1z * r2x - r1x * r2z);
       uz += f * (r1x * r2y - r1y * r2x);
@@ -58,21 +69,28 @@ struct Segments {
 
   // Vector potential A(p) = sum Gamma / (4 pi) int dl / sqrt(|p - x|^2 + eps^2) over the segments; for a
   // segment with unit direction t, s0 = (p - a).t and h^2 = |p - a|^2 - s0^2 the integral is
-  // asinh((|l| - s0) / H) - asinh(-s0 / H), H = sqrt(h^2 + eps^2).
+  // asinh((|l| - s0) / H) + asinh(s0 / H), H = sqrt(h^2 + eps^2), taken as one logarithm:
+  // asinh(x) = ln e(x), e(x) = x + sqrt(1 + x^2), written 1 / (sqrt(1 + x^2) - x) for x < 0 (no cancellation).
   Vec3 potential(const Vec3& p, double eps2) const {
-    double ax_ = 0, ay_ = 0, az_ = 0;
+    const double px = p.x(), py = p.y(), pz = p.z();
+    const double* __restrict x = ax.data(), * __restrict y = ay.data(), * __restrict z = az.data();
+    const double* __restrict dx = lx.data(), * __restrict dy = ly.data(), * __restrict dz = lz.data(), * __restrict g = gamma.data();
+    double sx = 0, sy = 0, sz = 0;
     const std::size_t n = gamma.size();
+    auto e = [](double v) {
+      const double q = std::sqrt(1.0 + v * v);
+      return v >= 0 ? v + q : 1.0 / (q - v);
+    };
     for (std::size_t i = 0; i < n; ++i) {
-      const double len = std::sqrt(l2[i]);
-      const double tx = lx[i] / len, ty = ly[i] / len, tz = lz[i] / len;
-      const double rx = p.x() - ax[i], ry = p.y() - ay[i], rz = p.z() - az[i];
+      const double len = std::sqrt(dx[i] * dx[i] + dy[i] * dy[i] + dz[i] * dz[i]);
+      const double tx = dx[i] / len, ty = dy[i] / len, tz = dz[i] / len;
+      const double rx = px - x[i], ry = py - y[i], rz = pz - z[i];
       const double s0 = rx * tx + ry * ty + rz * tz;
-      const double h2 = std::max(0.0, rx * rx + ry * ry + rz * rz - s0 * s0);
-      const double H = std::sqrt(h2 + eps2);
-      const double I = gamma[i] * (std::asinh((len - s0) / H) + std::asinh(s0 / H));
-      ax_ += I * tx, ay_ += I * ty, az_ += I * tz;
+      const double H = std::sqrt(std::max(0.0, rx * rx + ry * ry + rz * rz - s0 * s0) + eps2);
+      const double I = g[i] * std::log(e((len - s0) / H) * e(s0 / H));
+      sx += I * tx, sy += I * ty, sz += I * tz;
     }
-    return {ax_, ay_, az_};
+    return {sx, sy, sz};
   }
 };
 
@@ -98,8 +116,9 @@ std::vector<std::vector<Vec3>> node_velocities(const std::vector<Ring>& rings, c
   std::vector<std::vector<Vec3>> u(rings.size());
   std::vector<std::pair<int, int>> index;
   for (std::size_t r = 0; r < rings.size(); ++r) {
-    u[r].resize(rings[r].node.size());
-    for (std::size_t i = 0; i < rings[r].node.size(); ++i) index.emplace_back(static_cast<int>(r), static_cast<int>(i));
+    const int m = static_cast<int>(rings[r].node.size());
+    u[r].resize(m);
+    for (int i = 0; i < m; ++i) index.emplace_back(static_cast<int>(r), i);
   }
   const long n = static_cast<long>(index.size());
 #pragma omp parallel for schedule(static)
