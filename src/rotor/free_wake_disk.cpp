@@ -116,9 +116,8 @@ std::vector<std::vector<Vec3>> node_velocities(const std::vector<Ring>& rings, c
   std::vector<std::vector<Vec3>> u(rings.size());
   std::vector<std::pair<int, int>> index;
   for (std::size_t r = 0; r < rings.size(); ++r) {
-    const int m = static_cast<int>(rings[r].node.size());
-    u[r].resize(m);
-    for (int i = 0; i < m; ++i) index.emplace_back(static_cast<int>(r), i);
+    u[r].resize(rings[r].node.size());
+    for (std::size_t i = 0; i < rings[r].node.size(); ++i) index.emplace_back(static_cast<int>(r), static_cast<int>(i));
   }
   const long n = static_cast<long>(index.size());
 #pragma omp parallel for schedule(static)
