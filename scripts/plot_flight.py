@@ -41,6 +41,8 @@ def read(path):
     cols = {k: [] for k in rows[0]}
     for r in rows:
         for k, v in r.items():
+            if k is None:  # more fields than the header names
+                sys.exit(f"plot_flight.py: {path}: a row has more fields than its header")
             try:
                 cols[k].append(float(v))
             except (TypeError, ValueError):

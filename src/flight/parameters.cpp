@@ -16,6 +16,8 @@ constexpr double kDeg = M_PI / 180.0;
 class Reader {
  public:
   explicit Reader(std::string path) : path_(std::move(path)) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path_, ec)) throw ParameterError(path_ + ": is a directory, not a parameter file");
     try {
       root_ = YAML::LoadFile(path_);
     } catch (const YAML::BadFile&) {

@@ -60,6 +60,7 @@ std::function<int()> add_trim_command(CLI::App& app) {
     if (o->inflow != "lrm") refuse_lrm_options(*cmd, {"--N", "--reach", "--backend", "--warm-up"});
     const auto speeds = parse_speeds(o->speeds);
     const HelicopterParameters p = load_config(o->config);
+    if (!o->reference.empty()) check_csv_columns(o->reference, "--reference", {"speed_m_s"});
     const fs::path dir(o->out);
     prepare_output(dir, {"trim.csv", "trim.png"}, o->overwrite);
     std::unique_ptr<rotor::InflowModel> inflow;

@@ -53,6 +53,7 @@ std::function<int()> add_free_wake_sweep(CLI::App& sweep) {
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
     const auto speeds = parse_speeds(o->speeds);
+    if (!o->lrm.empty()) check_csv_columns(o->lrm, "--lrm", {"N", "reach", "speed_m_s", "lrm_mean_m_s", "momentum_theory_m_s"});
     const lrm::LrmConfig lrm_defaults;
     std::vector<rotor::FreeWakeDiskConfig> cases;
     for (double v : speeds) {  // every case checked before any run

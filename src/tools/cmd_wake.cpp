@@ -43,10 +43,12 @@ std::function<int()> add_wake_command(CLI::App& app) {
   cmd->add_option("--N", opt->domain.cells_per_length, "cells per ship length (thesis: converged at 364)");
   cmd->add_option("--motion", opt->motion, "static, pitch, heave, approach or FILE.csv (time_s,heave_m,roll_deg,pitch_deg)");
   cmd->add_option("--wind", opt->domain.wind, "wind over the deck from ahead, m/s (model case 9.77, approach 20.58)");
-  cmd->add_option("--startup", opt->startup, "start-up before the first frame, s (default: the wind's time across the domain)");
+  cmd->add_option("--startup", opt->startup, "start-up before the first frame, s (default: the wind's time across the domain)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--duration", opt->duration, "seconds of frames");
   cmd->add_option("--interval", opt->frame_interval, "seconds between frames (thesis: 0.02)");
-  cmd->add_option("--stats-interval", opt->stats_interval, "seconds between centre-plane samples (default: the frame interval)");
+  cmd->add_option("--stats-interval", opt->stats_interval, "seconds between centre-plane samples (default: the frame interval)")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--backend", *backend, "cpu, cuda or auto");
   cmd->add_option("--smagorinsky", opt->domain.smagorinsky, "Smagorinsky constant s (thesis 6.2: 0.025)");
   cmd->add_option("--viscosity", opt->domain.viscosity, "kinematic viscosity, m^2/s (thesis tables 6.2, 6.3: 1.46072e-4)");
@@ -60,7 +62,8 @@ std::function<int()> add_wake_command(CLI::App& app) {
                 "leave; with the reflecting one a disturbed stream grows, docs/design.md \"The noisy inlet\")");
   cmd->add_flag("--no-slip-sea", opt->domain.no_slip_sea, "no-slip sea surface (the thesis) instead of slip");
   cmd->add_option("--out", opt->out, "wake table FILE.h5 (FILE.xdmf, FILE_centre_plane.csv/.png beside it)");
-  cmd->add_option("--checkpoint-every", opt->checkpoint_seconds, "wall-clock seconds between checkpoints (FILE.h5.ckpt)");
+  cmd->add_option("--checkpoint-every", opt->checkpoint_seconds, "wall-clock seconds between checkpoints (FILE.h5.ckpt)")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--mesh", *mesh, "also write the ship geometry as a binary STL (for rviz / ParaView)");
   cmd->add_flag("--overwrite", (*flags)[0], "replace an existing table");
   cmd->add_flag("--no-resume", (*flags)[1], "ignore a checkpoint (needs --overwrite when the table exists)");

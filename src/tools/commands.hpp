@@ -19,6 +19,9 @@ std::function<int()> add_validate_command(CLI::App& app);
 // "0:5:70" (start:step:stop) or "0,10,25", 1 to 400 values in lo..hi; CLI::ValidationError naming
 // `option` otherwise (number_list.cpp).
 std::vector<double> parse_number_list(const std::string& text, const std::string& option, double lo, double hi, const std::string& unit);
+// Throws CLI::ValidationError naming the option when a floating-point option of the parsed command
+// (app and its chosen sub-commands) is not a finite number: "nan" passes CLI11's range checks.
+void reject_non_finite_numbers(const CLI::App& app);
 #ifdef SHIP_LRM_HAVE_FLIGHT
 std::function<int()> add_trim_command(CLI::App& app);
 std::function<int()> add_doublet_command(CLI::App& app);
@@ -32,6 +35,9 @@ std::function<int()> add_free_wake_sweep(CLI::App& sweep);
 // Shared by the sweep commands (cmd_flight.cpp):
 // parse_number_list in 0..100 m/s as --speeds.
 std::vector<double> parse_speeds(const std::string& text);
+// Checks before any run that `path` (given to `option`) is a readable CSV file whose header row
+// names every one of `columns`; CLI::ValidationError otherwise.
+void check_csv_columns(const std::string& path, const std::string& option, const std::vector<std::string>& columns);
 // Creates dir; refuses to overwrite an existing file of `names` unless overwrite is set.
 void prepare_output(const std::filesystem::path& dir, const std::vector<std::string>& names, bool overwrite);
 // scripts/plot_flight.py <kind> csv png [--reference ref]; a failure is a warning, the CSV stays.

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
     return rc == 0 ? 0 : 2;
   }
   try {
+    ship_lrm::tools::reject_non_finite_numbers(app);
     for (auto& action : actions) {
       const int rc = action();  // -1: its sub-command was not chosen
       if (rc >= 0) return rc;

@@ -1,4 +1,7 @@
-// Number lists of the command-line options ("0:5:70" or "0,10,25"), shared by the sub-commands.
+// Numbers on the command line: the lists of the options ("0:5:70" or "0,10,25"), shared by the
+// sub-commands, and the check that every floating-point option holds a finite number.
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -9,6 +12,7 @@ namespace ship_lrm::tools {
 std::vector<double> parse_number_list(const std::string& text, const std::string& option, double lo, double hi, const std::string& unit) {
   std::vector<double> v;
   const auto num = [&](const std::string& s) {
+    if (s.empty()) throw CLI::ValidationError(option, "an empty entry in '" + text + "'");
     size_t pos = 0;
     double x = 0;
     try {
@@ -38,6 +42,25 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
   for (double x : v)
     if (x < lo || x > hi) throw CLI::ValidationError(option, "values must lie in " + range.str());
   return v;
+}
+
+void reject_non_finite_numbers(const CLI::App& app) {
+  // CLI11's range checks compare with < and >, which NaN passes; "inf" passes the unbounded ones.
+  for (const CLI::Option* opt : app.get_options()) {
+    if (opt->get_type_name().rfind("FLOAT", 0) != 0) continue;
+    for (const std::string& value : opt->results()) {
+      size_t pos = 0;
+      double x = 0;
+      try {
+        x = std::stod(value, &pos);
+      } catch (const std::exception&) {
+        pos = 0;
+      }
+      if (pos == 0 || pos != value.size() || !std::isfinite(x))
+        throw CLI::ValidationError(opt->get_name(), "'" + value + "' is not a finite number");
+    }
+  }
+  for (const CLI::App* sub : app.get_subcommands()) reject_non_finite_numbers(*sub);
 }
 
 }  // namespace ship_lrm::tools

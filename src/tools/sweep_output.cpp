@@ -1,8 +1,10 @@
 // Shared helpers of the sweep commands: speed lists (number_list.cpp), output directories, plotting.
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "commands.hpp"
 #include "ship_lrm/flight/parameters.hpp"
@@ -25,12 +27,28 @@ bool run_script(const std::string& script, const std::string& args) {
   return std::system(cmd.c_str()) == 0;
 }
 
+void check_csv_columns(const std::string& path, const std::string& option, const std::vector<std::string>& columns) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw CLI::ValidationError(option, "'" + path + "' is not a file");
+  std::ifstream f(path);
+  std::string header;
+  if (!f || !std::getline(f, header)) throw CLI::ValidationError(option, "cannot read '" + path + "'");
+  if (!header.empty() && header.back() == '\r') header.pop_back();
+  std::vector<std::string> names;
+  std::stringstream ss(header);
+  for (std::string name; std::getline(ss, name, ',');) names.push_back(name);
+  for (const std::string& c : columns)
+    if (std::find(names.begin(), names.end(), c) == names.end())
+      throw CLI::ValidationError(option, "'" + path + "' has no column '" + c + "' in its header row");
+}
+
 // Plot with Debian's python3 + matplotlib; a missing plotter is a warning, the CSV stays.
 void plot(const std::string& kind, const fs::path& csv, const fs::path& png, const std::string& reference) {
   std::string args = kind + " '" + csv.string() + "' '" + png.string() + "'";
   if (!reference.empty()) args += " --reference '" + reference + "'";
   if (!run_script("plot_flight.py", args))
-    std::cerr << "ship_lrm: warning: plotting failed (needs python3 with matplotlib); the CSV " << csv << " is complete\n";
+    std::cerr << "ship_lrm: warning: plotting failed (the message above says why; it needs Debian's python3 with matplotlib); the CSV "
+              << csv << " is complete\n";
   else
     std::cout << "wrote " << png.string() << "\n";
 }

@@ -1,0 +1,44 @@
+#!/bin/sh
+# Bad numbers on the command line are invalid input (exit code 2, a message naming the option)
+# before any work: NaN passes CLI11's range checks (every comparison with it is false), "inf" the
+# unbounded options, an empty entry of a list used to read as 0, and a negative start-up or sample
+# interval of `wake` used to mean "the default". Usage: bad_numbers.sh SHIP_LRM_BINARY SCRATCH_DIR
+bin=$1
+dir=$2
+rm -rf "$dir" && mkdir -p "$dir" || exit 1
+printf 'name,value\n1,2\n' > "$dir/other.csv"
+failed=0
+expect() {  # expect 'what the message must say' ARGS...
+  want=$1
+  shift
+  out=$(timeout 20 "$bin" "$@" 2>&1 < /dev/null)
+  rc=$?
+  if [ $rc -ne 2 ] || ! printf '%s' "$out" | grep -q -- "$want"; then
+    echo "FAILED (exit $rc, wanted 2 and '$want'): ship_lrm $*"
+    printf '%s\n' "$out" | tail -3
+    failed=1
+  fi
+}
+expect "--warm-up: 'nan' is not a finite number" trim --inflow lrm --N 16 --speeds 10 --warm-up nan --out "$dir/a"
+expect "--speed: 'nan' is not a finite number" bench flight --speed nan --seconds 1
+expect "--seconds: 'NaN' is not a finite number" bench lbm --size 8 --steps 0 --seconds NaN
+expect "--tolerance: 'nan' is not a finite number" validate cylinder --resolution 4 --max-steps 10 --tolerance nan
+expect "--lateral: 'inf' is not a finite number" approach --lateral inf --out "$dir/b"
+expect "--height: '-inf' is not a finite number" approach --height -inf --out "$dir/b"
+expect "--startup: 'nan' is not a finite number" wake --preset tiny --startup nan --out "$dir/w.h5"
+expect "--startup" wake --preset tiny --startup -1 --out "$dir/w.h5"
+expect "--stats-interval" wake --preset tiny --stats-interval -1 --out "$dir/w.h5"
+expect "--checkpoint-every" wake --preset tiny --checkpoint-every 0 --out "$dir/w.h5"
+expect "--speeds: an empty entry in '5,,10'" trim --speeds 5,,10 --out "$dir/c"
+expect "--heights: values must lie in" sweep ground --heights=-1 --N 16 --out "$dir/d"
+expect "--reference: '$dir/other.csv' has no column 'speed_m_s'" trim --speeds 10 --reference "$dir/other.csv" --out "$dir/e"
+expect "--lrm: '$dir/other.csv' has no column 'N'" sweep free-wake --speeds 40 --lrm "$dir/other.csv" --out "$dir/f"
+expect "is a directory, not a parameter file" trim --speeds 10 --config "$dir" --out "$dir/g"
+# nothing was made by the refused runs
+for made in a b c d e f g w.h5; do
+  if [ -e "$dir/$made" ]; then
+    echo "FAILED: a refused run left $dir/$made"
+    failed=1
+  fi
+done
+exit $failed
