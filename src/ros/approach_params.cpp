@@ -13,16 +13,9 @@ namespace {
 
 std::string where(const ros::NodeHandle& nh, const std::string& name) { return nh.resolveName(name); }
 
-// A parameter of type T: absent keeps `value`; present with another type is an error naming it.
-template <typename T>
-void read(const ros::NodeHandle& nh, const std::string& name, T& value) {
-  if (!nh.hasParam(name)) return;
-  T v{};
-  if (!nh.getParam(name, v)) throw ParamError("parameter " + where(nh, name) + " has the wrong type");
-  value = v;
-}
+}  // namespace
 
-void read_number(const ros::NodeHandle& nh, const std::string& name, double& value) {
+void read_number_param(const ros::NodeHandle& nh, const std::string& name, double& value) {
   if (!nh.hasParam(name)) return;
   double d = 0;
   int i = 0;
@@ -31,11 +24,9 @@ void read_number(const ros::NodeHandle& nh, const std::string& name, double& val
   else if (nh.getParam(name, i))
     value = i;
   else
-    throw ParamError("parameter " + where(nh, name) + " must be a number");
-  if (!std::isfinite(value)) throw ParamError("parameter " + where(nh, name) + " must be finite");
+    throw ParamError("parameter " + nh.resolveName(name) + " must be a number");
+  if (!std::isfinite(value)) throw ParamError("parameter " + nh.resolveName(name) + " must be finite");
 }
-
-}  // namespace
 
 std::string missing_table_message(const std::string& path, bool is_default) {
   if (is_default) return "the default wake table " + path + " does not exist yet; make it with `ship_lrm wake --preset default`";
@@ -44,22 +35,22 @@ std::string missing_table_message(const std::string& path, bool is_default) {
 
 lrm::ApproachConfig approach_config(const ros::NodeHandle& nh, bool table_here) {
   lrm::ApproachConfig c;
-  read(nh, "wake_file", c.table);
+  read_param(nh, "wake_file", c.table);
   const bool is_default = c.table.empty();
   if (is_default) c.table = wake::default_table_path();
   if (table_here && !std::filesystem::exists(c.table)) throw ParamError(missing_table_message(c.table, is_default));
-  read(nh, "inflow", c.inflow);
+  read_param(nh, "inflow", c.inflow);
   if (c.inflow != "lrm" && c.inflow != "pitt_peters")
     throw ParamError("parameter " + where(nh, "inflow") + " must be lrm or pitt_peters, got '" + c.inflow + "'");
   int nodes = 32;  // as `ship_lrm approach`
-  read(nh, "N", nodes);
+  read_param(nh, "N", nodes);
   if (nodes < 16 || nodes > 512) throw ParamError("parameter " + where(nh, "N") + " must lie in [16, 512], got " + std::to_string(nodes));
   c.lrm.nodes = nodes;
-  read_number(nh, "reach", c.lrm.reach);
+  read_number_param(nh, "reach", c.lrm.reach);
   if (!(c.lrm.reach >= 1.0 && c.lrm.reach <= 8.0))
     throw ParamError("parameter " + where(nh, "reach") + " must lie in [1, 8] (domain edge / 4R), got " + std::to_string(c.lrm.reach));
   std::string backend = "auto";
-  read(nh, "backend", backend);
+  read_param(nh, "backend", backend);
   try {
     c.lrm.backend = lbm::parse_backend(backend);
   } catch (const std::exception& e) {
@@ -67,11 +58,11 @@ lrm::ApproachConfig approach_config(const ros::NodeHandle& nh, bool table_here) 
   }
   // the LRM's faces, as `ship_lrm approach --faces --outlet-sigma --relaxed-faces --rotor-far-field`
   std::string faces = "thesis";
-  read(nh, "faces", faces);
+  read_param(nh, "faces", faces);
   double sigma = 0;
-  read_number(nh, "outlet_sigma", sigma);
+  read_number_param(nh, "outlet_sigma", sigma);
   std::vector<std::string> relaxed = {"back", "top", "bottom"};
-  read(nh, "relaxed_faces", relaxed);
+  read_param(nh, "relaxed_faces", relaxed);
   try {
     lrm::apply_face_setup(faces, c.lrm);
     lrm::relax_faces(relaxed, sigma, c.lrm);
@@ -79,22 +70,22 @@ lrm::ApproachConfig approach_config(const ros::NodeHandle& nh, bool table_here) 
     throw ParamError("parameters " + where(nh, "faces") + ", " + where(nh, "outlet_sigma") + ", " + where(nh, "relaxed_faces") + ": " +
                      e.what());
   }
-  read(nh, "rotor_far_field", c.lrm.rotor_far_field);
-  read_number(nh, "duration", c.duration);
-  read_number(nh, "startup", c.startup);
-  read_number(nh, "table_offset", c.table_offset);
-  read_number(nh, "trim_speed", c.trim_speed);
-  read_number(nh, "lattice_margin", c.lattice_margin);
-  read(nh, "ship_walls", c.ship_walls);
-  read(nh, "fuselage", c.fuselage);
-  read(nh, "wake", c.wake);
-  read(nh, "free_flight", c.free_flight);
-  read_number(nh, "path/start_distance", c.path.start_distance);
-  read_number(nh, "path/height", c.path.height);
-  read_number(nh, "path/lateral", c.path.lateral);
-  read_number(nh, "path/speed", c.path.speed);
-  read_number(nh, "path/decelerate_at", c.path.decelerate_at);
-  read_number(nh, "path/hover_at", c.path.hover_at);
+  read_param(nh, "rotor_far_field", c.lrm.rotor_far_field);
+  read_number_param(nh, "duration", c.duration);
+  read_number_param(nh, "startup", c.startup);
+  read_number_param(nh, "table_offset", c.table_offset);
+  read_number_param(nh, "trim_speed", c.trim_speed);
+  read_number_param(nh, "lattice_margin", c.lattice_margin);
+  read_param(nh, "ship_walls", c.ship_walls);
+  read_param(nh, "fuselage", c.fuselage);
+  read_param(nh, "wake", c.wake);
+  read_param(nh, "free_flight", c.free_flight);
+  read_number_param(nh, "path/start_distance", c.path.start_distance);
+  read_number_param(nh, "path/height", c.path.height);
+  read_number_param(nh, "path/lateral", c.path.lateral);
+  read_number_param(nh, "path/speed", c.path.speed);
+  read_number_param(nh, "path/decelerate_at", c.path.decelerate_at);
+  read_number_param(nh, "path/hover_at", c.path.hover_at);
   try {
     lrm::validate(c);
   } catch (const std::exception& e) {

@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <mutex>
 #include <optional>
 #include <pluginlib/class_list_macros.hpp>
@@ -64,30 +65,36 @@ class FlightModelNodelet : public nodelet::Nodelet {
     ros::NodeHandle& pnh = getPrivateNodeHandle();
     try {
       cfg_ = approach_config(ros::NodeHandle(nh, "approach"));
-      pnh.param("realtime", realtime_, false);
-      pnh.param("lrm_timeout", lrm_timeout_, 30.0);
-      pnh.param("connect_timeout", connect_timeout_, 60.0);
-      pnh.param("output_interval", output_interval_, 0.01);
-      pnh.param("tf_interval", tf_interval_, 0.02);
-      pnh.param("clock_offset", clock_offset_, 1.0);
-      pnh.param("wait_for_loads_subscribers", wait_for_subscribers_, 0);
-      pnh.param("wait_for_recorder", wait_for_recorder_, false);
-      pnh.param("request_subscribers", request_subscribers_, 1);
-      pnh.param("min_step_wall", min_step_wall_, 0.0);
+      realtime_ = param_or(pnh, "realtime", false);
+      lrm_timeout_ = param_or(pnh, "lrm_timeout", 30.0);
+      connect_timeout_ = param_or(pnh, "connect_timeout", 60.0);
+      output_interval_ = param_or(pnh, "output_interval", 0.01);
+      tf_interval_ = param_or(pnh, "tf_interval", 0.02);
+      clock_offset_ = param_or(pnh, "clock_offset", 1.0);
+      wait_for_subscribers_ = param_or(pnh, "wait_for_loads_subscribers", 0);
+      wait_for_recorder_ = param_or(pnh, "wait_for_recorder", false);
+      request_subscribers_ = param_or(pnh, "request_subscribers", 1);
+      min_step_wall_ = param_or(pnh, "min_step_wall", 0.0);
       if (!(min_step_wall_ >= 0.0 && min_step_wall_ <= 1.0))
         throw ParamError("parameter " + pnh.resolveName("min_step_wall") + " must lie in [0, 1] s, got " + std::to_string(min_step_wall_));
       std::string mode;
-      pnh.param<std::string>("realtime_mode", mode, "lockstep");
+      mode = param_or(pnh, "realtime_mode", std::string("lockstep"));
       if (mode != "lockstep" && mode != "pipelined")
         throw ParamError("parameter " + pnh.resolveName("realtime_mode") + " must be lockstep or pipelined, got '" + mode + "'");
       realtime_mode_ = mode == "pipelined" ? lrm::RealTimeMode::Pipelined : lrm::RealTimeMode::LockStep;
       std::string config;
-      pnh.param<std::string>("helicopter_config", config, "");
+      config = param_or(pnh, "helicopter_config", std::string(""));
       params_ = config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(config);
-      if (!(lrm_timeout_ > 0)) throw ParamError("parameter " + pnh.resolveName("lrm_timeout") + " must be > 0 s");
+      if (!(lrm_timeout_ > 0 && std::isfinite(lrm_timeout_)))
+        throw ParamError("parameter " + pnh.resolveName("lrm_timeout") + " must be a finite number > 0 s");
+      if (!(connect_timeout_ > 0 && std::isfinite(connect_timeout_)))
+        throw ParamError("parameter " + pnh.resolveName("connect_timeout") + " must be a finite number > 0 s");
+      if (wait_for_subscribers_ < 0) throw ParamError("parameter " + pnh.resolveName("wait_for_loads_subscribers") + " must be >= 0");
+      if (request_subscribers_ < 1) throw ParamError("parameter " + pnh.resolveName("request_subscribers") + " must be >= 1");
       if (!(output_interval_ > 0)) throw ParamError("parameter " + pnh.resolveName("output_interval") + " must be > 0 s");
       if (!(tf_interval_ > 0)) throw ParamError("parameter " + pnh.resolveName("tf_interval") + " must be > 0 s");
-      if (!(clock_offset_ > 0)) throw ParamError("parameter " + pnh.resolveName("clock_offset") + " must be > 0 s");
+      if (!(clock_offset_ > 0 && std::isfinite(clock_offset_)))
+        throw ParamError("parameter " + pnh.resolveName("clock_offset") + " must be a finite number > 0 s");
     } catch (const std::exception& e) {
       NODELET_FATAL("FlightModel: %s", e.what());
       report_failure(getNodeHandle(), std::string("FlightModel: ") + e.what());

@@ -52,23 +52,26 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     ros::NodeHandle& nh = getNodeHandle();
     ros::NodeHandle& pnh = getPrivateNodeHandle();
     try {
-      pnh.param<std::string>("wake_source", wake_source_, "file");
+      wake_source_ = param_or(pnh, "wake_source", std::string("file"));
       if (wake_source_ != "file" && wake_source_ != "server")
         throw ParamError("parameter " + pnh.resolveName("wake_source") + " must be file or server, got '" + wake_source_ + "'");
       cfg_ = approach_config(ros::NodeHandle(nh, "approach"), wake_source_ == "file");
-      pnh.param("slice_interval", slice_interval_, 0.1);
-      pnh.param("slice_normal", slice_normal_, 1);
-      pnh.param("clock_offset", clock_offset_, 1.0);
+      slice_interval_ = param_or(pnh, "slice_interval", 0.1);
+      slice_normal_ = param_or(pnh, "slice_normal", 1);
+      clock_offset_ = param_or(pnh, "clock_offset", 1.0);
       if (slice_normal_ < 0 || slice_normal_ > 2)
         throw ParamError("parameter " + pnh.resolveName("slice_normal") + " must be 0 (x), 1 (y) or 2 (z)");
       if (!(slice_interval_ > 0)) throw ParamError("parameter " + pnh.resolveName("slice_interval") + " must be > 0 s");
+      if (!(clock_offset_ > 0 && std::isfinite(clock_offset_)))
+        throw ParamError("parameter " + pnh.resolveName("clock_offset") + " must be a finite number > 0 s");
       std::string config;
-      pnh.param<std::string>("helicopter_config", config, "");
+      config = param_or(pnh, "helicopter_config", std::string(""));
       params_ = config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(config);
       if (cfg_.inflow != "lrm")
         NODELET_WARN("LrmSolver: approach/inflow is %s; the flight model will not ask for the LRM", cfg_.inflow.c_str());
-      pnh.param("realtime", realtime_, false);
-      pnh.param("answer_subscribers", answer_subscribers_, 1);
+      realtime_ = param_or(pnh, "realtime", false);
+      answer_subscribers_ = param_or(pnh, "answer_subscribers", 1);
+      if (answer_subscribers_ < 1) throw ParamError("parameter " + pnh.resolveName("answer_subscribers") + " must be >= 1");
       if (wake_source_ == "file") start(nullptr);
     } catch (const std::exception& e) {
       fail(e.what());

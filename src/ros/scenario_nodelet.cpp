@@ -38,12 +38,12 @@ class ScenarioNodelet : public nodelet::Nodelet {
                  Channel{"pedal", 0, -20.0}};
     try {
       for (Channel& c : channels_) {
-        pnh.param(std::string("axis_") + c.name, c.axis, c.axis);
-        pnh.param(std::string("gain_") + c.name, c.gain, c.gain);
+        c.axis = param_or(pnh, std::string("axis_") + c.name, c.axis);
+        c.gain = param_or(pnh, std::string("gain_") + c.name, c.gain);
         if (c.axis < -1) throw ParamError("parameter " + pnh.resolveName(std::string("axis_") + c.name) + " must be >= -1");
         if (!std::isfinite(c.gain)) throw ParamError("parameter " + pnh.resolveName(std::string("gain_") + c.name) + " must be finite");
       }
-      pnh.param("dead_band", dead_band_, 0.05);
+      dead_band_ = param_or(pnh, "dead_band", 0.05);
       if (!(dead_band_ >= 0 && dead_band_ < 1)) throw ParamError("parameter " + pnh.resolveName("dead_band") + " must lie in [0, 1)");
     } catch (const std::exception& e) {
       NODELET_FATAL("Scenario: %s", e.what());

@@ -84,6 +84,17 @@ def inflows(bag):
                 for _, m, _ in b.read_messages(topics=["/rotor/inflow"])]
 
 
+def spans(numbers):
+    """Sorted sequence numbers as runs, "3-7, 12" (where in the run a recorder lost messages)."""
+    runs = []
+    for n in numbers:
+        if runs and n == runs[-1][1] + 1:
+            runs[-1][1] = n
+        else:
+            runs.append([n, n])
+    return ", ".join(f"{a}" if a == b else f"{a}-{b}" for a, b in runs) or "none"
+
+
 def main():
     table, work = sys.argv[1], sys.argv[2]
     shutil.rmtree(work, ignore_errors=True)
@@ -107,7 +118,7 @@ def main():
         if not sent or sent != list(range(len(sent))) or answered != set(sent):
             failures.append(f"{os.path.basename(bag)} misses requests or answers: {len(sent)} requests "
                             f"(sequence numbers {'' if sent == list(range(len(sent))) else 'not '}0, 1, ...), "
-                            f"answers to {len(answered & set(sent))} of them")
+                            f"answers to {len(answered & set(sent))} of them; unanswered: {spans(sorted(set(sent) - answered))}")
     if any(x[-2] != "lrm" or x[-1] for x in a):
         failures.append("not every load came from the LRM")
 

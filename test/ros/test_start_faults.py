@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Issue 6 acceptance 3, the faults at start: a missing wake table stops the run with a message that
 names the command that makes it (`ship_lrm wake --preset default --out PATH`), and an invalid parameter
-is refused at start with its name and range (or its choices). Each launch must end by itself (no
+is refused at start with its name and range (or its choices), or its type. Each launch must end by itself (no
 hang), and no process may die of a signal (a crash); roslaunch runs on a port of its own.
 
     test_start_faults.py TINY_TABLE.h5    (run through the workspace's devel/env.sh)"""
@@ -58,6 +58,10 @@ def main():
     expect(out, "invalid parameter", r"parameter /approach/reach must lie in \[1, 8\] \(domain edge / 4R\), got 0\.5")
     out = launch([f"wake_file:={table}", "N:=16", "faces:=nope"])
     expect(out, "invalid face set-up", r"parameters /approach/faces, .*: unknown face set-up 'nope' \(thesis, open-sides")
+    # a private parameter of another type is refused, not replaced by its default (roslaunch makes
+    # the string "abc" of it; ros::NodeHandle::param used to fall back to 30 s silently)
+    out = launch([f"wake_file:={table}", "N:=16", "lrm_timeout:=abc"])
+    expect(out, "private parameter of the wrong type", r"FlightModel: parameter /flight_model/lrm_timeout must be a number")
     print("PASSED")
 
 

@@ -5,18 +5,12 @@
 #pragma once
 #include <ros/node_handle.h>
 
-#include <stdexcept>
 #include <string>
 
 #include "ship_lrm/lrm/approach_config.hpp"
+#include "ship_lrm/ros/param_reader.hpp"
 
 namespace ship_lrm::ros_layer {
-
-// A parameter that cannot be used; what() names it and says why.
-class ParamError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // Reads and checks (ParamError naming the parameter): wake_file (empty: the default table, which must
 // exist here unless table_here is false: a solver fed by the wake server), inflow, N, reach, backend,
