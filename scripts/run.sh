@@ -34,4 +34,4 @@ else
 fi
 ship_lrm trim --speeds 0:5:70 --out "$out" --overwrite
 ship_lrm doublet --axis lateral --speed 13.37 --out "$out" --overwrite
-ship_lrm validate cylinder --resolution 10 --vti "$out/cylinder.vti"
+ship_lrm validate cylinder --resolution 10 --vti "$out/cylinder.vti" --overwrite

@@ -33,6 +33,7 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
     std::string seed = "random";
     std::string backend = "auto";
     std::string csv;
+    bool overwrite = false;
   };
   auto o = std::make_shared<Opts>();
   cmd->add_option("--mach", o->machs, "stream speeds U / c_s, a comma list")->capture_default_str();
@@ -61,11 +62,13 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
       ->capture_default_str();
   cmd->add_option("--backend", o->backend, "cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
   cmd->add_option("--csv", o->csv, "also write every sample (mach, step, max |u - U|, seeded-mode amplitude) to this CSV file");
+  cmd->add_flag("--overwrite", o->overwrite, "replace an existing --csv file");
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
     const std::vector<double> machs = parse_number_list(o->machs, "--mach", 0.0, lbm::kMaxSetupMach, "");
     std::ofstream csv;
     if (!o->csv.empty()) {
+      check_output_file(o->csv, "--csv", o->overwrite);
       csv.open(o->csv);
       if (!csv) throw lbm::ConfigError("validate stream-stability: cannot write " + o->csv);
       csv << "mach,step,max_deviation,seeded_mode\n";
@@ -115,6 +118,7 @@ std::function<int()> add_validate_command(CLI::App& app) {
     long max_steps = 400000;
     double tolerance = 1e-3;
     std::string vti;
+    bool overwrite = false;
   };
   auto o = std::make_shared<Opts>();
   cyl->add_option("--resolution", o->resolution, "cells per cylinder diameter")->check(CLI::Range(4, 80))->capture_default_str();
@@ -124,10 +128,12 @@ std::function<int()> add_validate_command(CLI::App& app) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cyl->add_option("--vti", o->vti, "write the final flow field to this .vti file (ParaView)");
+  cyl->add_flag("--overwrite", o->overwrite, "replace an existing --vti file");
   auto stability = add_stream_stability_command(*cmd);
   return [o, cyl, stability]() -> int {
     if (const int r = stability(); r >= 0) return r;
     if (!cyl->parsed()) return -1;
+    check_output_file(o->vti, "--vti", o->overwrite);
     const auto r = lbm::run_cylinder_benchmark(
         o->resolution, lbm::parse_backend(o->backend), o->max_steps, o->tolerance,
         [](long step, double cd) { std::printf("step %8ld  c_D %.5f\n", step, cd), std::fflush(stdout); }, o->vti);

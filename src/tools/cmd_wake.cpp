@@ -65,7 +65,7 @@ std::function<int()> add_wake_command(CLI::App& app) {
   cmd->add_option("--checkpoint-every", opt->checkpoint_seconds, "wall-clock seconds between checkpoints (FILE.h5.ckpt)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--mesh", *mesh, "also write the ship geometry as a binary STL (for rviz / ParaView)");
-  cmd->add_flag("--overwrite", (*flags)[0], "replace an existing table");
+  cmd->add_flag("--overwrite", (*flags)[0], "replace an existing table (and --mesh file)");
   cmd->add_flag("--no-resume", (*flags)[1], "ignore a checkpoint (needs --overwrite when the table exists)");
   cmd->add_flag("--float32", (*flags)[2], "store float32 instead of float16");
   cmd->add_flag("--no-plot", (*flags)[3], "skip the PNG plots");
@@ -103,6 +103,8 @@ std::function<int()> add_wake_command(CLI::App& app) {
     o.domain.density = o.scale == "model" ? 1.225 : 1.1934;  // thesis tables 6.2, 6.3
     o.domain.backend = lbm::parse_backend(*backend);
     if ((*flags)[2]) o.half_precision = false;
+    check_output_file(o.out, "--out", true);  // a folder is refused here; an existing table below
+    check_output_file(*mesh, "--mesh", (*flags)[0]);
     const std::string ckpt = o.out + ".ckpt";
     o.resume = !(*flags)[1];
     if (fs::exists(o.out) && !(o.resume && fs::exists(ckpt)) && !(*flags)[0]) {

@@ -22,6 +22,12 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
 // Throws CLI::ValidationError naming the option when a floating-point option of the parsed command
 // (app and its chosen sub-commands) is not a finite number: "nan" passes CLI11's range checks.
 void reject_non_finite_numbers(const CLI::App& app);
+// Output paths (output_files.cpp). A file the command writes: lbm::ConfigError when it is a folder,
+// or exists and overwrite is not set.
+void check_output_file(const std::string& path, const std::string& option, bool overwrite);
+// Creates dir (lbm::ConfigError when it is a file); refuses to overwrite an existing file of `names`
+// unless overwrite is set.
+void prepare_output(const std::filesystem::path& dir, const std::vector<std::string>& names, bool overwrite);
 #ifdef SHIP_LRM_HAVE_FLIGHT
 std::function<int()> add_trim_command(CLI::App& app);
 std::function<int()> add_doublet_command(CLI::App& app);
@@ -38,8 +44,6 @@ std::vector<double> parse_speeds(const std::string& text);
 // Checks before any run that `path` (given to `option`) is a readable CSV file whose header row
 // names every one of `columns`; CLI::ValidationError otherwise.
 void check_csv_columns(const std::string& path, const std::string& option, const std::vector<std::string>& columns);
-// Creates dir; refuses to overwrite an existing file of `names` unless overwrite is set.
-void prepare_output(const std::filesystem::path& dir, const std::vector<std::string>& names, bool overwrite);
 // scripts/plot_flight.py <kind> csv png [--reference ref]; a failure is a warning, the CSV stays.
 void plot(const std::string& kind, const std::filesystem::path& csv, const std::filesystem::path& png, const std::string& reference);
 // Runs a shipped script from scripts/ with Debian's python3 (the one with matplotlib, numpy and

@@ -14,13 +14,6 @@ namespace fs = std::filesystem;
 
 std::vector<double> parse_speeds(const std::string& text) { return parse_number_list(text, "--speeds", 0.0, 100.0, "m/s"); }
 
-// Refuses to overwrite a user's files unless asked to.
-void prepare_output(const fs::path& dir, const std::vector<std::string>& names, bool overwrite) {
-  fs::create_directories(dir);
-  for (const auto& n : names)
-    if (fs::exists(dir / n) && !overwrite) throw std::runtime_error((dir / n).string() + " exists; pass --overwrite to replace it");
-}
-
 bool run_script(const std::string& script, const std::string& args) {
   const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
   const std::string cmd = python + " '" + flight::shipped_directory("SHIP_LRM_SCRIPTS_DIR", "scripts") + "/" + script + "' " + args;

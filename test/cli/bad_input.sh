@@ -1,8 +1,10 @@
 #!/bin/sh
-# Bad numbers on the command line are invalid input (exit code 2, a message naming the option)
-# before any work: NaN passes CLI11's range checks (every comparison with it is false), "inf" the
+# Bad input on the command line is refused (exit code 2, a message naming the option) before any
+# work. Numbers: NaN passes CLI11's range checks (every comparison with it is false), "inf" the
 # unbounded options, an empty entry of a list used to read as 0, and a negative start-up or sample
-# interval of `wake` used to mean "the default". Usage: bad_numbers.sh SHIP_LRM_BINARY SCRATCH_DIR
+# interval of `wake` used to mean "the default". Paths: a file where a folder is meant or the reverse,
+# and an existing file that --vti, --csv or --mesh used to replace without --overwrite (the user's
+# file must stay as it was). Usage: bad_input.sh SHIP_LRM_BINARY SCRATCH_DIR
 bin=$1
 dir=$2
 rm -rf "$dir" && mkdir -p "$dir" || exit 1
@@ -34,6 +36,16 @@ expect "--heights: values must lie in" sweep ground --heights=-1 --N 16 --out "$
 expect "--reference: '$dir/other.csv' has no column 'speed_m_s'" trim --speeds 10 --reference "$dir/other.csv" --out "$dir/e"
 expect "--lrm: '$dir/other.csv' has no column 'N'" sweep free-wake --speeds 40 --lrm "$dir/other.csv" --out "$dir/f"
 expect "is a directory, not a parameter file" trim --speeds 10 --config "$dir" --out "$dir/g"
+printf 'the user'"'"'s\n' > "$dir/mine.txt"
+expect "--out: '$dir/mine.txt' is a file" trim --speeds 10 --out "$dir/mine.txt"
+expect "--out: '$dir' is a folder" wake --preset tiny --out "$dir" --overwrite
+expect "--vti: '$dir/mine.txt' exists; pass --overwrite" validate cylinder --resolution 4 --max-steps 10 --vti "$dir/mine.txt"
+expect "--csv: '$dir/mine.txt' exists; pass --overwrite" validate stream-stability --size 4 --steps 5 --csv "$dir/mine.txt"
+expect "--mesh: '$dir/mine.txt' exists; pass --overwrite" wake --preset tiny --out "$dir/w.h5" --mesh "$dir/mine.txt"
+if [ "$(cat "$dir/mine.txt")" != "the user's" ]; then
+  echo "FAILED: a refused run changed the user's file"
+  failed=1
+fi
 # nothing was made by the refused runs
 for made in a b c d e f g w.h5; do
   if [ -e "$dir/$made" ]; then
