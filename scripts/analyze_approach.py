@@ -20,6 +20,7 @@ continuation the thesis assumes. Below two cycles per record (hatched) the ampli
 """
 import argparse
 import csv
+import math
 import os
 import sys
 
@@ -140,6 +141,10 @@ def main():
     a = ap.parse_args()
     if not os.path.isfile(a.input):
         sys.exit(f"analyze_approach: {a.input} does not exist")
+    if os.path.exists(a.out) and not os.path.isdir(a.out):
+        sys.exit(f"analyze_approach: --out {a.out} is a file; --out names the folder the results go to")
+    if not (math.isfinite(a.startup) and a.startup >= 0):
+        sys.exit(f"analyze_approach: --startup must be a finite number >= 0 s, got {a.startup}")
     with open(a.input, "rb") as f:
         is_bag = f.read(13) == b"#ROSBAG V2.0\n"
     d = read_bag(a.input, a.topic, a.out) if is_bag else read_csv(a.input)

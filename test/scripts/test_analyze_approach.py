@@ -48,6 +48,15 @@ with tempfile.TemporaryDirectory() as d:
     if abs(float(ct["delta_max"]) - 1e-4) > 2e-6:
         failures.append(f"largest Delta C_T {ct['delta_max']}, expected 1e-4")
 
+    # bad input: a clear message and a failing exit, no traceback, nothing written
+    for args, message in [(["--out", path], "is a file; --out names the folder"),
+                          (["--out", os.path.join(d, "bad"), "--startup", "nan"], "--startup must be a finite number")]:
+        r = subprocess.run([sys.executable, os.path.join(scripts, "analyze_approach.py"), path] + args, capture_output=True, text=True)
+        if r.returncode == 0 or message not in r.stderr or "Traceback" in r.stderr:
+            failures.append(f"{args}: exit {r.returncode}, stderr {r.stderr.strip()[-200:]!r}")
+    if os.path.exists(os.path.join(d, "bad")):
+        failures.append("a refused analysis made its --out folder")
+
 if failures:
     sys.exit("FAILED: " + "; ".join(failures))
 print("analyze_approach: calibration and outputs OK")
