@@ -260,7 +260,9 @@ StlShip::StlShip(const std::string& path, double scale, bool z_up, double waterl
       v *= scale;
       if (z_up) v = Vec3(v.x(), -v.y(), -v.z());  // z up, y to port -> z down, y starboard
     }
-  // closed and consistently oriented: every directed edge once, and its reverse once
+  // closed and consistently oriented: each directed edge as often as its reverse. A single closed
+  // surface has each once; a union of closed parts (the block ships' export by --mesh: hull,
+  // superstructure and hangar as overlapping boxes) may share an edge between parts.
   std::map<std::array<float, 3>, int> ids;
   const auto id = [&](const Vec3& v) {
     const std::array<float, 3> key{static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
@@ -274,7 +276,7 @@ StlShip::StlShip(const std::string& path, double scale, bool z_up, double waterl
   }
   for (const auto& [e, count] : edges) {
     const auto rev = edges.find({e.second, e.first});
-    if (count != 1 || rev == edges.end() || rev->second != 1) {
+    if (rev == edges.end() || rev->second != count) {
       Vec3 p = Vec3::Zero();
       for (const auto& [key, i] : ids)
         if (i == e.first) p = Vec3(key[0], key[1], key[2]);
@@ -284,6 +286,16 @@ StlShip::StlShip(const std::string& path, double scale, bool z_up, double waterl
                           ")); repair it (e.g. with MeshLab or admesh) and try again");
     }
   }
+  // the inside test counts crossings with the sign of the outward normal: orient the surface outward
+  // (a positive enclosed volume, divergence theorem)
+  double volume = 0, extent = 0;
+  for (const auto& t : tris_) {
+    volume += t.v[0].dot(t.v[1].cross(t.v[2])) / 6.0;
+    for (const auto& v : t.v) extent = std::max(extent, v.cwiseAbs().maxCoeff());
+  }
+  if (!(std::abs(volume) > 1e-12 * extent * extent * extent)) throw GeometryError("STL file '" + path + "' encloses no volume");
+  if (volume < 0)
+    for (auto& t : tris_) std::swap(t.v[1], t.v[2]);
   datum_ = datum_of(tris_, waterline);
   // buckets over (y, z)
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -315,11 +327,13 @@ StlShip::StlShip(const std::string& path, double scale, bool z_up, double waterl
 }
 
 bool StlShip::inside(const Vec3& p0) const {
-  // ray parity along +x; a tiny irrational offset keeps the ray off edges and vertices
+  // winding number along a ray in +x: +1 where it leaves through an outward face, -1 where it enters;
+  // inside where the sum is positive (for one closed surface the parity rule, for a union of
+  // overlapping closed parts the union). A tiny irrational offset keeps the ray off edges and vertices.
   const Vec3 p = p0 + Vec3(0, 1.2345678e-7, 2.3456789e-7) * cell_;
   const int j = static_cast<int>(std::floor((p.y() - y0_) / cell_)), l = static_cast<int>(std::floor((p.z() - z0_) / cell_));
   if (j < 0 || l < 0 || j >= ny_ || l >= nz_) return false;
-  int crossings = 0;
+  int winding = 0;
   for (int k : buckets_[j + static_cast<std::size_t>(ny_) * l]) {
     const auto& v = tris_[k].v;
     // barycentric test in the (y, z) projection
@@ -329,9 +343,9 @@ bool StlShip::inside(const Vec3& p0) const {
     const double b = ((v[2].y() - p.y()) * (v[0].z() - p.z()) - (v[0].y() - p.y()) * (v[2].z() - p.z())) / d;
     const double c = 1.0 - a - b;
     if (a < 0 || b < 0 || c < 0) continue;
-    if (a * v[0].x() + b * v[1].x() + c * v[2].x() > p.x()) ++crossings;
+    if (a * v[0].x() + b * v[1].x() + c * v[2].x() > p.x()) winding += d > 0 ? 1 : -1;  // d: the normal's x part
   }
-  return crossings % 2 == 1;
+  return winding > 0;
 }
 
 double StlShip::signed_distance(const Vec3& p) const {

@@ -65,6 +65,42 @@ TEST(ShipGeometry, StlRoundTripMatchesTheBlocks) {
   EXPECT_NEAR(stl.datum().length, 5.0, 1e-6);
 }
 
+TEST(ShipGeometry, StlOfTheBlockShipsReadsBack) {
+  // `ship_lrm wake --mesh` exports a block ship as overlapping closed boxes (edges shared between
+  // parts, volumes counted twice where they overlap); read back, inside is their union: the same
+  // inside test as the blocks, and outside a distance consistent with theirs. Also with every normal
+  // turned in.
+  for (const auto& ship : {make_natogd(1.0), make_sfs2(1.0)}) {
+    std::vector<Triangle> flipped = ship->mesh();
+    for (auto& t : flipped) std::swap(t.v[1], t.v[2]);
+    for (const auto& [name, tris] : {std::make_pair(std::string("out"), ship->mesh()), std::make_pair(std::string("in"), flipped)}) {
+      const std::string path = temp(ship->name() + "_" + name + ".stl");
+      write_stl(path, tris);
+      const StlShip stl(path);
+      Vec3 lo = Vec3::Constant(1e300), hi = -lo;
+      for (const auto& t : tris)
+        for (const auto& v : t.v) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+      std::mt19937 rng(11);
+      std::uniform_real_distribution<double> u(-0.05, 1.05);
+      int inside = 0;
+      for (int k = 0; k < 4000; ++k) {
+        const Vec3 p = lo + (hi - lo).cwiseProduct(Vec3(u(rng), u(rng), u(rng)));
+        ASSERT_EQ(stl.inside(p), ship->inside(p)) << ship->name() << " " << name << ": " << p.transpose();
+        inside += ship->inside(p);
+        const double d = ship->signed_distance(p);
+        // outside, the blocks' distance is the largest over their faces' planes: the Euclidean one
+        // where the nearest point lies on a face, less near edges and corners (a box's: at least 1 / sqrt(3) of it)
+        if (d > 0) {
+          ASSERT_GE(stl.signed_distance(p), d - 1e-4) << p.transpose();
+          ASSERT_LE(stl.signed_distance(p), std::sqrt(3.0) * d + 1e-4) << p.transpose();
+        }
+      }
+      EXPECT_GT(inside, 200) << ship->name();  // the samples do reach into the ship
+      EXPECT_NEAR(stl.datum().length, ship->datum().length, 1e-4);
+    }
+  }
+}
+
 TEST(ShipGeometry, StlAsciiAndErrors) {
   const std::string ascii = temp("tet.stl");
   {
@@ -93,6 +129,14 @@ TEST(ShipGeometry, StlAsciiAndErrors) {
   } catch (const GeometryError& e) {
     EXPECT_NE(std::string(e.what()).find("not a closed"), std::string::npos) << e.what();
   }
+  // one triangle turned against its neighbours
+  const std::string flipped = temp("flipped.stl");
+  {
+    auto t = read_stl(ascii);
+    std::swap(t[0].v[1], t[0].v[2]);
+    write_stl(flipped, t);
+  }
+  EXPECT_THROW(StlShip{flipped}, GeometryError);
   const std::string junk = temp("junk.stl");
   std::ofstream(junk) << "this is not an stl file";
   EXPECT_THROW(StlShip{junk}, GeometryError);

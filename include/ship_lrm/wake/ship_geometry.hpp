@@ -91,8 +91,12 @@ std::unique_ptr<BlockShip> make_sfs2(double scale = 1.0);
 
 // A closed triangle mesh read from STL (binary or ASCII), in metres after `scale`, in the ship frame
 // (or z up, y to port when z_up is set, as most CAD exports: converted). Refuses meshes with holes or
-// inconsistent orientation (every edge must join exactly two triangles, traversed in opposite
-// directions), naming the first bad edge. The waterline is the lowest point unless given.
+// inconsistent orientation (every edge must be traversed as often in one direction as in the other),
+// naming the first bad edge, and meshes that enclose no volume; inward-facing normals are turned out.
+// One closed surface, or a union of closed parts (as `ship_lrm wake --mesh` exports the block ships):
+// inside is their union, by the winding number. The signed distance is exact outside; inside a union
+// its magnitude may be too small near a part's face that lies within another part. The waterline is
+// the lowest point unless given.
 class StlShip final : public ShipGeometry {
  public:
   StlShip(const std::string& path, double scale = 1.0, bool z_up = false, double waterline = std::nan(""));
@@ -106,7 +110,7 @@ class StlShip final : public ShipGeometry {
   std::string name_;
   std::vector<Triangle> tris_;
   ShipDatum datum_;
-  // buckets of triangle indices over (y, z) for the inside test by ray parity along +x
+  // buckets of triangle indices over (y, z) for the inside test by the winding number along +x
   double y0_ = 0, z0_ = 0, cell_ = 1;
   int ny_ = 1, nz_ = 1;
   std::vector<std::vector<int>> buckets_;
