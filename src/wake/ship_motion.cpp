@@ -69,8 +69,9 @@ TableMotion::TableMotion(const std::string& path, const Vec3& centre) : ShipMoti
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     std::istringstream s(line);
     double v[4];
-    char comma;
-    if (!(s >> v[0] >> comma >> v[1] >> comma >> v[2] >> comma >> v[3]))
+    char c[3] = {0, 0, 0};
+    std::string rest;
+    if (!(s >> v[0] >> c[0] >> v[1] >> c[1] >> v[2] >> c[2] >> v[3]) || c[0] != ',' || c[1] != ',' || c[2] != ',' || (s >> rest))
       throw MotionError("ship motion file '" + path + "', line " + std::to_string(row) + ": expected 4 comma-separated numbers");
     for (double x : v)
       if (!std::isfinite(x)) throw MotionError("ship motion file '" + path + "', line " + std::to_string(row) + ": a value is not finite");

@@ -194,5 +194,11 @@ TEST(ShipMotion, FroudeScaledCasesAndTimeSeriesFile) {
   EXPECT_THROW(TableMotion(csv, Vec3::Zero()), MotionError);
   std::ofstream(csv) << "time_s,heave_m,roll_deg,pitch_deg\n0,0,0,0\n1,nan,0,0\n";
   EXPECT_THROW(TableMotion(csv, Vec3::Zero()), MotionError);
+  std::ofstream(csv) << "time_s,heave_m,roll_deg,pitch_deg\n0,0,0,0\n1,0,0,0,7\n";  // a fifth column was ignored
+  EXPECT_THROW(TableMotion(csv, Vec3::Zero()), MotionError);
+  std::ofstream(csv) << "time_s,heave_m,roll_deg,pitch_deg\n0;0;0;0\n1;0;0;0\n";  // any separator was taken
+  EXPECT_THROW(TableMotion(csv, Vec3::Zero()), MotionError);
+  std::ofstream(csv) << "time_s,heave_m,roll_deg,pitch_deg\n0, 0, 0, 0\n1, 1, 0, 0 \r\n";  // spaces and CRLF are fine
+  EXPECT_NEAR(TableMotion(csv, Vec3::Zero()).pose(0.5).heave, 0.5, 1e-12);
   EXPECT_THROW(make_motion("wobble", 1.0, Vec3::Zero()), MotionError);
 }
