@@ -100,6 +100,8 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
   return [o, ground]() -> int {
     if (!ground->parsed()) return -1;
     const bool hover = o->mode == "hover";
+    if (hover && ground->get_option("--speeds")->count() > 0)
+      throw lbm::ConfigError("--speeds applies to --mode forward (hover sweeps the heights at zero speed)");
     const auto heights = parse_number_list(o->heights.empty() ? (hover ? "0.5,0.6,0.7,0.8,1,1.25,1.5,2" : "0.5,0.6,0.8,1") : o->heights,
                                            "--heights", 0.0, 1000.0, "R");
     const auto speeds = hover ? std::vector<double>{0.0} : parse_speeds(o->speeds);

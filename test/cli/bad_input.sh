@@ -33,6 +33,7 @@ expect "--stats-interval" wake --preset tiny --stats-interval -1 --out "$dir/w.h
 expect "--checkpoint-every" wake --preset tiny --checkpoint-every 0 --out "$dir/w.h5"
 expect "--speeds: an empty entry in '5,,10'" trim --speeds 5,,10 --out "$dir/c"
 expect "--heights: values must lie in" sweep ground --heights=-1 --N 16 --out "$dir/d"
+expect "--speeds applies to --mode forward" sweep ground --mode hover --speeds 10 --N 16 --out "$dir/d"
 expect "--reference: '$dir/other.csv' has no column 'speed_m_s'" trim --speeds 10 --reference "$dir/other.csv" --out "$dir/e"
 expect "--lrm: '$dir/other.csv' has no column 'N'" sweep free-wake --speeds 40 --lrm "$dir/other.csv" --out "$dir/f"
 expect "is a directory, not a parameter file" trim --speeds 10 --config "$dir" --out "$dir/g"
