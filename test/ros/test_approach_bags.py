@@ -141,6 +141,10 @@ def main():
     if not ct or abs(float(ct[0]["value_at_startup"]) - a[k0][2]) > 1e-6 * abs(a[k0][2]):
         failures.append("the summary's C_T at the start-up is not the bag's")
     if failures:
+        for i in (1, 2):  # the runs' warnings (a solver that gave up waiting for the recorder says so)
+            with open(os.path.join(work, f"run{i}.log"), errors="replace") as f:
+                warnings = [line.strip() for line in f if "WARN" in line or "ERROR" in line]
+            print(f"run{i}.log: {len(warnings)} warnings" + "".join(f"\n  {w[:300]}" for w in warnings[:8]))
         sys.exit("FAILED: " + "; ".join(failures))
     print(f"two runs: {len(a)} identical loads; analysis written to {out}")
 
