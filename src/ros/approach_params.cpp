@@ -2,6 +2,7 @@
 #include "ship_lrm/ros/approach_params.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 #include "ship_lrm/lbm/solver.hpp"
@@ -19,12 +20,21 @@ void read_number_param(const ros::NodeHandle& nh, const std::string& name, doubl
   if (!nh.hasParam(name)) return;
   double d = 0;
   int i = 0;
-  if (nh.getParam(name, d))
+  std::string text;
+  if (nh.getParam(name, d)) {
     value = d;
-  else if (nh.getParam(name, i))
+  } else if (nh.getParam(name, i)) {
     value = i;
-  else
+  } else if (nh.getParam(name, text)) {
+    // roslaunch types an argument as a number only when int() or, with a dot, float() reads it:
+    // `speed:=1e3` arrives as the text "1e3"; take it when the whole text is a number
+    char* end = nullptr;
+    value = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size())
+      throw ParamError("parameter " + nh.resolveName(name) + " must be a number, got '" + text + "'");
+  } else {
     throw ParamError("parameter " + nh.resolveName(name) + " must be a number");
+  }
   if (!std::isfinite(value)) throw ParamError("parameter " + nh.resolveName(name) + " must be finite");
 }
 

@@ -61,7 +61,10 @@ def main():
     # a private parameter of another type is refused, not replaced by its default (roslaunch makes
     # the string "abc" of it; ros::NodeHandle::param used to fall back to 30 s silently)
     out = launch([f"wake_file:={table}", "N:=16", "lrm_timeout:=abc"])
-    expect(out, "private parameter of the wrong type", r"FlightModel: parameter /flight_model/lrm_timeout must be a number")
+    expect(out, "private parameter of the wrong type", r"FlightModel: parameter /flight_model/lrm_timeout must be a number, got 'abc'")
+    # "1e9" comes as text from roslaunch and is read as the number it is: refused for its size, not its type
+    out = launch([f"wake_file:={table}", "N:=16", "reach:=1e9"])
+    expect(out, "a number roslaunch leaves as text", r"parameter /approach/reach must lie in \[1, 8\] \(domain edge / 4R\), got 1000000000")
     print("PASSED")
 
 

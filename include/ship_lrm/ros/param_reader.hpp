@@ -26,8 +26,8 @@ void read_param(const ros::NodeHandle& nh, const std::string& name, T& value) {
   value = v;
 }
 
-// A number (a double, or an int as roslaunch makes of "30"): absent keeps `value`; present and not a
-// finite number is a ParamError naming it.
+// A number (a double, an int as roslaunch makes of "30", or text that is wholly a number as it makes
+// of "1e3"): absent keeps `value`; present and not a finite number is a ParamError naming it.
 void read_number_param(const ros::NodeHandle& nh, const std::string& name, double& value);
 
 // The same, returning the parameter or `fallback` when it is absent: a number (read_number_param)
