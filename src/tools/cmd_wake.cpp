@@ -104,7 +104,6 @@ std::function<int()> add_wake_command(CLI::App& app) {
     o.domain.backend = lbm::parse_backend(*backend);
     if ((*flags)[2]) o.half_precision = false;
     check_output_file(o.out, "--out", true);  // a folder is refused here; an existing table below
-    check_output_file(*mesh, "--mesh", (*flags)[0]);
     const std::string ckpt = o.out + ".ckpt";
     o.resume = !(*flags)[1];
     if (fs::exists(o.out) && !(o.resume && fs::exists(ckpt)) && !(*flags)[0]) {
@@ -131,6 +130,8 @@ std::function<int()> add_wake_command(CLI::App& app) {
       }
     }
     if (!(*flags)[1] && fs::exists(ckpt)) std::cout << "resuming from the checkpoint " << ckpt << "\n";
+    // before the run; a run that resumes wrote its mesh the first time: the same command again must resume
+    check_output_file(*mesh, "--mesh", (*flags)[0] || (o.resume && fs::exists(ckpt)));
     if (!mesh->empty()) {
       wake::write_stl(*mesh, wake::make_ship(o.ship, o.scale)->mesh(), "ship_lrm " + o.ship);
       std::cout << "wrote " << *mesh << "\n";
