@@ -77,24 +77,20 @@ class FlightModelNodelet : public nodelet::Nodelet {
       min_step_wall_ = param_or(pnh, "min_step_wall", 0.0);
       if (!(min_step_wall_ >= 0.0 && min_step_wall_ <= 1.0))
         throw ParamError("parameter " + pnh.resolveName("min_step_wall") + " must lie in [0, 1] s, got " + std::to_string(min_step_wall_));
-      std::string mode;
-      mode = param_or(pnh, "realtime_mode", std::string("lockstep"));
+      const std::string mode = param_or(pnh, "realtime_mode", std::string("lockstep"));
       if (mode != "lockstep" && mode != "pipelined")
         throw ParamError("parameter " + pnh.resolveName("realtime_mode") + " must be lockstep or pipelined, got '" + mode + "'");
       realtime_mode_ = mode == "pipelined" ? lrm::RealTimeMode::Pipelined : lrm::RealTimeMode::LockStep;
-      std::string config;
-      config = param_or(pnh, "helicopter_config", std::string(""));
+      const std::string config = param_or(pnh, "helicopter_config", std::string(""));
       params_ = config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(config);
-      if (!(lrm_timeout_ > 0 && std::isfinite(lrm_timeout_)))
-        throw ParamError("parameter " + pnh.resolveName("lrm_timeout") + " must be a finite number > 0 s");
-      if (!(connect_timeout_ > 0 && std::isfinite(connect_timeout_)))
-        throw ParamError("parameter " + pnh.resolveName("connect_timeout") + " must be a finite number > 0 s");
+      // param_or has refused what is not a finite number
+      if (!(lrm_timeout_ > 0)) throw ParamError("parameter " + pnh.resolveName("lrm_timeout") + " must be > 0 s");
+      if (!(connect_timeout_ > 0)) throw ParamError("parameter " + pnh.resolveName("connect_timeout") + " must be > 0 s");
       if (wait_for_subscribers_ < 0) throw ParamError("parameter " + pnh.resolveName("wait_for_loads_subscribers") + " must be >= 0");
       if (request_subscribers_ < 1) throw ParamError("parameter " + pnh.resolveName("request_subscribers") + " must be >= 1");
       if (!(output_interval_ > 0)) throw ParamError("parameter " + pnh.resolveName("output_interval") + " must be > 0 s");
       if (!(tf_interval_ > 0)) throw ParamError("parameter " + pnh.resolveName("tf_interval") + " must be > 0 s");
-      if (!(clock_offset_ > 0 && std::isfinite(clock_offset_)))
-        throw ParamError("parameter " + pnh.resolveName("clock_offset") + " must be a finite number > 0 s");
+      if (!(clock_offset_ > 0)) throw ParamError("parameter " + pnh.resolveName("clock_offset") + " must be > 0 s");
     } catch (const std::exception& e) {
       NODELET_FATAL("FlightModel: %s", e.what());
       report_failure(getNodeHandle(), std::string("FlightModel: ") + e.what());

@@ -62,10 +62,8 @@ class LrmSolverNodelet : public nodelet::Nodelet {
       if (slice_normal_ < 0 || slice_normal_ > 2)
         throw ParamError("parameter " + pnh.resolveName("slice_normal") + " must be 0 (x), 1 (y) or 2 (z)");
       if (!(slice_interval_ > 0)) throw ParamError("parameter " + pnh.resolveName("slice_interval") + " must be > 0 s");
-      if (!(clock_offset_ > 0 && std::isfinite(clock_offset_)))
-        throw ParamError("parameter " + pnh.resolveName("clock_offset") + " must be a finite number > 0 s");
-      std::string config;
-      config = param_or(pnh, "helicopter_config", std::string(""));
+      if (!(clock_offset_ > 0)) throw ParamError("parameter " + pnh.resolveName("clock_offset") + " must be > 0 s");
+      const std::string config = param_or(pnh, "helicopter_config", std::string(""));
       params_ = config.empty() ? flight::load_default_bo105() : flight::load_helicopter_parameters(config);
       if (cfg_.inflow != "lrm")
         NODELET_WARN("LrmSolver: approach/inflow is %s; the flight model will not ask for the LRM", cfg_.inflow.c_str());

@@ -9,7 +9,6 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/Marker.h>
 
-#include <cmath>
 #include <pluginlib/class_list_macros.hpp>
 
 #include "ship_lrm/lrm/approach_config.hpp"
@@ -31,8 +30,7 @@ class ShipMotionNodelet : public nodelet::Nodelet {
       rate = param_or(pnh, "rate", 50.0);
       clock_offset_ = param_or(pnh, "clock_offset", 1.0);
       if (!(rate > 0 && rate <= 1000)) throw ParamError("parameter " + pnh.resolveName("rate") + " must lie in (0, 1000] Hz");
-      if (!(clock_offset_ > 0 && std::isfinite(clock_offset_)))
-        throw ParamError("parameter " + pnh.resolveName("clock_offset") + " must be a finite number > 0 s");
+      if (!(clock_offset_ > 0)) throw ParamError("parameter " + pnh.resolveName("clock_offset") + " must be > 0 s");
       table_ = lrm::open_approach_table(cfg_);
       ship_ = lrm::approach_ship(cfg_, table_->info());
     } catch (const std::exception& e) {
