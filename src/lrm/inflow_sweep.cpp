@@ -44,11 +44,18 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
   const long settle = static_cast<long>(std::ceil(c.settle / d.time_step()));
   const long every = std::max(1L, static_cast<long>(std::lround(0.05 / d.time_step())));  // sample every ~0.05 s
   const long samples = std::max(1L, static_cast<long>(std::ceil(c.average / (every * d.time_step()))));
-  d.step(std::max(1L, settle));
+  const long total = std::max(1L, settle) + samples * every;
+  long done = 0;
+  const auto advance = [&](long n) {
+    d.step(n);
+    done += n;
+    if (c.progress) c.progress(static_cast<double>(done) / static_cast<double>(total));
+  };
+  for (long left = std::max(1L, settle); left > 0; left -= every) advance(std::min(left, every));
   std::vector<double> induced(static_cast<size_t>(samples));
   SliceAverage plane;
   for (long k = 0; k < samples; ++k) {
-    d.step(every);
+    advance(every);
     const rotor::RotorInflow in = d.inflow();
     r.inflow.mean += in.mean / samples;
     r.inflow.sine += in.sine / samples;

@@ -145,6 +145,28 @@ void merge_far_wake(std::vector<Ring>& rings, double merge_age) {
   }
 }
 
+// The wake's bookkeeping for one step, shared by the run and by work_per_step: every ring ages a step,
+// the step's new ring (age half a step) joins, rings older than the wake age leave, old ones merge.
+void age_shed_and_merge(std::vector<Ring>& rings, Ring fresh, const FreeWakeDiskConfig& c) {
+  for (auto& r : rings) r.age += c.step;
+  rings.push_back(std::move(fresh));
+  while (!rings.empty() && rings.front().age > c.wake_age) rings.erase(rings.begin());
+  merge_far_wake(rings, c.merge_age);
+}
+
+// The cumulative cost of the run up to each step, in units of ring pairs (the Biot-Savart sum is
+// O(rings^2)): the same bookkeeping on rings without nodes.
+std::vector<double> cumulative_work(const FreeWakeDiskConfig& c, long steps) {
+  std::vector<Ring> rings;
+  std::vector<double> work(static_cast<std::size_t>(steps) + 1, 0.0);
+  for (long step = 1; step <= steps; ++step) {
+    const double n = static_cast<double>(rings.size());
+    work[static_cast<std::size_t>(step)] = work[static_cast<std::size_t>(step) - 1] + n * n + n;  // Heun's two sums, the new ring
+    age_shed_and_merge(rings, Ring{{}, 0.0, 0.5 * c.step, 0}, c);
+  }
+  return work;
+}
+
 void check(const FreeWakeDiskConfig& c) {
   auto fail = [](const std::string& what) { throw std::invalid_argument("free-wake disk: " + what); };
   if (!(c.radius > 0) || !(c.thrust > 0) || !(c.density > 0)) fail("radius, thrust and density must be > 0");
@@ -197,7 +219,10 @@ FreeWakeDiskResult solve_free_wake_disk(const FreeWakeDiskConfig& c) {
   double sum = 0.0;
   int count = 0;
   res.min = 1e300, res.max = -1e300;
-  for (long step = 1; step * dt <= t_end + 1e-9; ++step) {
+  long steps = 0;  // as many as the loop below takes
+  while ((steps + 1) * dt <= t_end + 1e-9) ++steps;
+  const std::vector<double> work = c.progress ? cumulative_work(c, steps) : std::vector<double>();
+  for (long step = 1; step <= steps; ++step) {
     // Heun's method on every node
     if (!rings.empty()) {
       const auto k1 = node_velocities(rings, air, eps2);
@@ -205,10 +230,8 @@ FreeWakeDiskResult solve_free_wake_disk(const FreeWakeDiskConfig& c) {
       for (std::size_t r = 0; r < rings.size(); ++r)
         for (int i = 0; i < m; ++i) predicted[r].node[i] += dt * k1[r][i];
       const auto k2 = node_velocities(predicted, air, eps2);
-      for (std::size_t r = 0; r < rings.size(); ++r) {
+      for (std::size_t r = 0; r < rings.size(); ++r)
         for (int i = 0; i < m; ++i) rings[r].node[i] += 0.5 * dt * (k1[r][i] + k2[r][i]);
-        rings[r].age += dt;
-      }
     }
     // the circulation shed during this step, placed where its middle is: half a step from the edge
     // along the velocity there (the sheet's midpoint rule; a ring on the edge would make the flux
@@ -217,10 +240,8 @@ FreeWakeDiskResult solve_free_wake_disk(const FreeWakeDiskConfig& c) {
       const Segments wake(rings);
       Ring fresh{edge, shed, 0.5 * dt, 0};
       for (int i = 0; i < m; ++i) fresh.node[i] += 0.5 * dt * (air + wake.velocity(edge[i], eps2));
-      rings.push_back(std::move(fresh));
+      age_shed_and_merge(rings, std::move(fresh), c);
     }
-    while (!rings.empty() && rings.front().age > c.wake_age) rings.erase(rings.begin());
-    merge_far_wake(rings, c.merge_age);
     for (const auto& r : rings)
       for (const auto& p : r.node)
         if (!p.allFinite() || p.norm() > 1e4)
@@ -234,6 +255,7 @@ FreeWakeDiskResult solve_free_wake_disk(const FreeWakeDiskConfig& c) {
         sum += s.mean, ++count;
         res.min = std::min(res.min, s.mean), res.max = std::max(res.max, s.mean);
       }
+      if (c.progress) c.progress(work[static_cast<std::size_t>(step)] / std::max(1.0, work.back()), s.mean);
     }
     res.steps = step;
   }

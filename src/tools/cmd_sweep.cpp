@@ -73,6 +73,18 @@ std::string tag(double v) {
   return s.str();
 }
 
+// "V = 10 m/s" or, above a ground, "V = 10 m/s, z/R = 0.5": a case in the progress line.
+std::string case_label(double speed, double height) {
+  return "V = " + tag(speed) + " m/s" + (height > 0 ? ", z/R = " + tag(height) : std::string());
+}
+
+// One case with a progress line on stderr (it takes minutes to hours at N = 64 - 128).
+lrm::IsolatedRotorResult run_with_progress(const lrm::LrmConfig& cfg, lrm::IsolatedRotorCase c, const std::string& label) {
+  ProgressLine bar(label);
+  c.progress = [&bar](double fraction) { bar.update(fraction); };
+  return lrm::run_isolated_rotor(cfg, c);
+}
+
 // The averaged centre plane of one case: CSV (x, z in m from the hub, FRD; velocity relative to the
 // rotor in m/s; wall 0/1) and, unless --no-plot, a PNG.
 std::function<int()> add_ground_sweep(CLI::App& sweep) {
@@ -150,13 +162,13 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
            "ratio_uncertainty\n";
     for (double v : speeds) {
       const auto run_cfg = lrm::config_for_stream(cfg, v);
-      const auto oge = lrm::run_isolated_rotor(run_cfg, case_for(v, 0));
+      const auto oge = run_with_progress(run_cfg, case_for(v, 0), case_label(v, 0));
       if (o->planes) write_plane(dir, plane_stem(v, 0), oge.centre_plane, cfg.radius, !o->no_plot);
       const double vi = rotor::glauert_induced_velocity(o->thrust, cfg.density, cfg.radius, v);
       std::cout << std::fixed << std::setprecision(3) << "V = " << v << " m/s, out of ground effect: v_mean " << oge.induced_mean
                 << " m/s +- " << std::abs(oge.induced_half_difference) << " (momentum theory " << vi << ")" << std::endl;
       for (double h : heights) {
-        const auto r = lrm::run_isolated_rotor(run_cfg, case_for(v, h));
+        const auto r = run_with_progress(run_cfg, case_for(v, h), case_label(v, h));
         if (o->planes) write_plane(dir, plane_stem(v, h), r.centre_plane, cfg.radius, !o->no_plot);
         const double ratio = r.induced_mean / oge.induced_mean;
         // the half-window differences of both means, combined (see IsolatedRotorResult)
@@ -220,7 +232,7 @@ std::function<int()> add_sweep_command(CLI::App& app) {
            "lrm_mean_std_m_s,lrm_mean_half_difference_m_s,faces\n";
     const double vh = rotor::hover_induced_velocity(o->thrust, cfg.density, cfg.radius);
     for (double v : speeds) {
-      const auto r = lrm::run_isolated_rotor(case_config(v), o->rotor_case(v));
+      const auto r = run_with_progress(case_config(v), o->rotor_case(v), case_label(v, 0));
       if (o->planes) write_plane(dir, "plane_V" + tag(v), r.centre_plane, cfg.radius, !o->no_plot);
       std::cout << std::fixed << std::setprecision(3) << "V = " << v << " m/s: LRM mean " << r.induced_mean << " m/s, Pitt-Peters "
                 << r.pitt_peters_mean << " (ratio " << r.induced_mean / r.pitt_peters_mean << "); cosine " << r.inflow.cosine.z() << " vs "

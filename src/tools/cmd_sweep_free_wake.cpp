@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "commands.hpp"
 #include "ship_lrm/lrm/domain.hpp"
@@ -75,7 +76,16 @@ std::function<int()> add_free_wake_sweep(CLI::App& sweep) {
            "mean_over_momentum_theory,ring_points,spacing_R,wake_length_R,merge_length_R,core_R,rings,steps,wall_s\n";
     for (std::size_t k = 0; k < cases.size(); ++k) {
       const auto start = std::chrono::steady_clock::now();
+      std::ostringstream label;
+      label << "V = " << speeds[k] << " m/s";
+      ProgressLine bar(label.str());
+      cases[k].progress = [&bar](double fraction, double mean) {
+        std::ostringstream now;
+        now << std::fixed << std::setprecision(3) << "mean " << mean << " m/s";
+        bar.update(fraction, now.str());
+      };
       const auto r = rotor::solve_free_wake_disk(cases[k]);
+      bar.finish();
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::cout << std::fixed << std::setprecision(3) << "V = " << speeds[k] << " m/s: free wake " << r.mean << " m/s (" << r.min << " - "
                 << r.max << "), Glauert " << r.momentum << ", ratio " << std::setprecision(4) << r.mean / r.momentum << "; " << r.rings

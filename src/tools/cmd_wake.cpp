@@ -19,13 +19,6 @@ namespace {
 std::atomic<bool> g_stop{false};
 extern "C" void on_signal(int) { g_stop = true; }
 
-void progress_bar(const wake::PrecomputeOptions::Progress& p) {
-  const int width = 30, done = static_cast<int>(p.fraction * width);
-  std::fprintf(stderr, "\r[%-*s] %5.1f %%  t = %7.2f s  %d frames  %6.1f MLUPS  ETA %5.0f s ", width, std::string(done, '#').c_str(),
-               100 * p.fraction, p.sim_time, p.frames, p.mlups, p.eta_seconds);
-  std::fflush(stderr);
-}
-
 }  // namespace
 
 std::function<int()> add_wake_command(CLI::App& app) {
@@ -137,13 +130,18 @@ std::function<int()> add_wake_command(CLI::App& app) {
       std::cout << "wrote " << *mesh << "\n";
     }
     o.stop = &g_stop;
-    o.progress = progress_bar;
+    ProgressLine bar("wake");
+    o.progress = [&bar](const wake::PrecomputeOptions::Progress& p) {
+      char detail[96];
+      std::snprintf(detail, sizeof detail, "t = %7.2f s  %d frames  %6.1f MLUPS", p.sim_time, p.frames, p.mlups);
+      bar.update(p.fraction, detail, p.eta_seconds);
+    };
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
     const wake::PrecomputeResult r = wake::precompute_wake(o);
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
-    std::fprintf(stderr, "\n");
+    bar.finish();
     std::cout << "ship " << o.ship << " (" << o.scale << "), motion " << o.motion << ", wind " << o.domain.wind
               << " m/s, N = " << o.domain.cells_per_length << ": " << r.cells << " cells, dx = " << r.dx << " m, dt = " << r.dt << " s\n"
               << r.steps << " steps (" << r.simulated << " s simulated) in " << r.wall_seconds << " s wall clock, " << r.mlups << " MLUPS, "

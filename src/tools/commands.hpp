@@ -2,6 +2,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -28,6 +29,26 @@ void check_output_file(const std::string& path, const std::string& option, bool 
 // Creates dir (lbm::ConfigError when it is a file); refuses to overwrite an existing file of `names`
 // unless overwrite is set.
 void prepare_output(const std::filesystem::path& dir, const std::vector<std::string>& names, bool overwrite);
+// The progress of a long run on stderr (progress_line.cpp): "label [####    ]  45.0 %  ETA 812 s
+// detail". On a terminal one line rewritten about once a second; elsewhere (a log) a line at every
+// tenth of the work, from 5 s on (a terminal: from 1 s on). The ETA comes from the wall clock so far
+// unless update() is given one.
+class ProgressLine {
+ public:
+  explicit ProgressLine(std::string label);
+  ~ProgressLine();
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+  void update(double fraction, const std::string& detail = "", double eta_seconds = -1.0);  // fraction of the work done, 0..1
+  void finish();  // ends a terminal's line (also done by the destructor)
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  std::string label_;
+  Clock::time_point start_, last_;
+  bool terminal_, shown_ = false;
+  int last_tenth_ = 0;
+};
 #ifdef SHIP_LRM_HAVE_FLIGHT
 std::function<int()> add_trim_command(CLI::App& app);
 std::function<int()> add_doublet_command(CLI::App& app);

@@ -5,7 +5,9 @@
 // Coarse numerics keep each case to seconds; docs/benchmarks.md has the converged runs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 #include "ship_lrm/rotor/free_wake_disk.hpp"
 #include "ship_lrm/rotor/momentum_theory.hpp"
@@ -25,7 +27,16 @@ FreeWakeDiskConfig coarse(const Vec3& air_over_vh) {
 
 TEST(FreeWakeDisk, InAClimbTheMeanInducedVelocityIsMomentumTheorys) {
   // climb at V_c = v_h: v = -V_c / 2 + sqrt(V_c^2 / 4 + v_h^2) = 0.618 v_h
-  const auto r = solve_free_wake_disk(coarse(Vec3(0, 0, 1.0)));
+  auto c = coarse(Vec3(0, 0, 1.0));
+  std::vector<double> done, means;  // the progress reported at every sample (the sweep's progress line)
+  c.progress = [&](double f, double mean) { done.push_back(f), means.push_back(mean); };
+  const auto r = solve_free_wake_disk(c);
+  ASSERT_EQ(done.size(), r.history.size());
+  for (std::size_t k = 0; k < means.size(); ++k) EXPECT_EQ(means[k], r.history[k].mean);
+  EXPECT_TRUE(std::is_sorted(done.begin(), done.end()));
+  EXPECT_DOUBLE_EQ(done.back(), 1.0);
+  // work counted as rings^2: the first tenth of the time (the wake still short) is far less of the work
+  EXPECT_LT(done[done.size() / 10], 0.05);
   EXPECT_NEAR(r.momentum / r.hover, 0.5 * (std::sqrt(5.0) - 1.0), 1e-9);
   EXPECT_NEAR(r.mean / r.momentum, 1.0, 0.01) << r.mean << " m/s against " << r.momentum;
   EXPECT_LT((r.max - r.min) / r.mean, 0.01);  // steady

@@ -3,6 +3,7 @@
 // algebraic models. Quick variants at N = 32; the sweeps run with `ship_lrm sweep ground`.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -108,7 +109,14 @@ TEST(Ground, HoverAtHalfARadiusLiesBetweenCheesemanBennettAndHayden) {
   lrm::IsolatedRotorCase c;
   c.settle = 3.0;
   c.average = 1.5;
+  std::vector<double> done;  // the progress reported on the way: rising to 1 (the sweeps' progress line)
+  c.progress = [&done](double f) { done.push_back(f); };
   const auto oge = lrm::run_isolated_rotor(quick_config(), c);
+  ASSERT_GE(done.size(), 80u);  // about every 0.05 s of 4.5 s
+  EXPECT_GT(done.front(), 0.0);
+  EXPECT_TRUE(std::is_sorted(done.begin(), done.end()));
+  EXPECT_DOUBLE_EQ(done.back(), 1.0);
+  c.progress = nullptr;
   c.ground_height = 0.5 * quick_config().radius;
   const auto ige = lrm::run_isolated_rotor(quick_config(), c);
   const double ratio = ige.induced_mean / oge.induced_mean;

@@ -3,6 +3,8 @@
 // theory and the algebraic ground-effect models.
 #pragma once
 
+#include <functional>
+
 #include "ship_lrm/lrm/domain.hpp"
 #include "ship_lrm/lrm/domain_slice.hpp"
 
@@ -17,6 +19,8 @@ struct IsolatedRotorCase {
   double ground_height = 0;   // m from the hub down to a ground plane moving at the stream; 0: none
   bool fuselage = false;      // a Bo 105-like fuselage (walls.hpp) below the disk
   bool centre_plane = false;  // also average the x-z plane through the hub (IsolatedRotorResult::centre_plane)
+  // called with the fraction of the case's LBM steps done, about every 0.05 s simulated (a progress line)
+  std::function<void(double)> progress;
 };
 
 // The lattice velocity (m/s mapped to Mach 0.3, LrmConfig::reference_velocity) for forward flight in

@@ -25,6 +25,7 @@
 // lifting-line theory), Glauert's limit.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "ship_lrm/rotor/inflow_model.hpp"
@@ -48,6 +49,10 @@ struct FreeWakeDiskConfig {
   double settle = 3.0;     // time before the averaging starts (after the wake_age has filled)
   double average = 2.0;    // averaging window
   int edge_points = 256;   // quadrature points of the flux integral round the edge
+  // called at every sample of the mean (every ~0.05 R / v_h) with the fraction of the run's work done
+  // (each step's O(rings^2) sum counted as such, so that the fraction tracks the wall clock while the
+  // wake fills) and the latest mean induced velocity in m/s (a progress line)
+  std::function<void(double fraction, double mean)> progress;
 };
 
 struct FreeWakeDiskSample {
