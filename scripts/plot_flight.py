@@ -121,18 +121,25 @@ def finish_speed_panels(fig, axes, title, out):
     fig.savefig(out, dpi=110)
 
 
+def climb_note(data):
+    """', climb 11.6 m/s' for a sweep run with --climb (older CSVs have no such column)."""
+    climb = data.get("climb_m_s", [0])[0]
+    return f", climb {climb:g} m/s" if climb > 0 else ""
+
+
 def plot_sweep_inflow(data, out):
     v = data["speed_m_s"]
     vh = data["hover_momentum_theory_m_s"][0]
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
     label = f"LRM N = {int(data['N'][0])}, a = {data['reach'][0]:g}"
     axes[0].plot(v, [x / vh for x in data["lrm_mean_m_s"]], "o-", label=label)
-    axes[0].plot(v, [x / vh for x in data["pitt_peters_mean_m_s"]], "-", color="k", label="Pitt-Peters (= Glauert here)")
+    axes[0].plot(v, [x / vh for x in data["pitt_peters_mean_m_s"]], "_-", ms=16, color="k", label="Pitt-Peters (= momentum theory here)")
     axes[0].set_ylabel("mean inflow / v_h")
     axes[1].plot(v, [x / vh for x in data["lrm_cosine_m_s"]], "o-", label=label)
-    axes[1].plot(v, [x / vh for x in data["pitt_peters_cosine_m_s"]], "-", color="k", label="Pitt-Peters")
+    axes[1].plot(v, [x / vh for x in data["pitt_peters_cosine_m_s"]], "_-", ms=16, color="k", label="Pitt-Peters")
     axes[1].set_ylabel("cosine inflow / v_h")
-    finish_speed_panels(fig, axes, f"Isolated rotor, uniform thrust, zero incidence (cf. thesis figs. 8.1, 8.2); v_h = {vh:.2f} m/s", out)
+    finish_speed_panels(fig, axes, f"Isolated rotor, uniform thrust, zero incidence{climb_note(data)} (cf. thesis figs. 8.1, 8.2); "
+                        f"v_h = {vh:.2f} m/s", out)
 
 
 def plot_sweep_free_wake(data, out, lrm):
@@ -140,7 +147,8 @@ def plot_sweep_free_wake(data, out, lrm):
     vh = data["hover_momentum_theory_m_s"][0]
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
     axes[0].plot(v, [x / vh for x in data["free_wake_mean_m_s"]], "s-", label="free vortex-ring wake")
-    axes[0].plot(v, [x / vh for x in data["momentum_theory_m_s"]], "-", color="k", label="Glauert")
+    reference = "momentum theory" if climb_note(data) else "Glauert"
+    axes[0].plot(v, [x / vh for x in data["momentum_theory_m_s"]], "_-", ms=16, color="k", label=reference)
     axes[1].plot(v, data["mean_over_momentum_theory"], "s-", label="free vortex-ring wake")
     if lrm:
         label = f"LRM N = {int(lrm['N'][0])}, a = {lrm['reach'][0]:g}"
@@ -150,8 +158,8 @@ def plot_sweep_free_wake(data, out, lrm):
     for y in (0.95, 1.05):
         axes[1].axhline(y, color="k", lw=0.5, ls=":")
     axes[0].set_ylabel("mean induced velocity / v_h")
-    axes[1].set_ylabel("mean induced velocity / Glauert")
-    finish_speed_panels(fig, axes, f"Uniformly loaded actuator disk, zero incidence; v_h = {vh:.2f} m/s", out)
+    axes[1].set_ylabel(f"mean induced velocity / {reference}")
+    finish_speed_panels(fig, axes, f"Uniformly loaded actuator disk, zero incidence{climb_note(data)}; v_h = {vh:.2f} m/s", out)
 
 
 def plot_sweep_ground(data, out):

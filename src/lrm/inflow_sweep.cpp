@@ -16,8 +16,12 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
   if (!(c.thrust > 0)) throw lbm::ConfigError("isolated rotor: needs a thrust > 0 N");
   IsolatedRotorResult r;
   if (!(c.ground_height >= 0)) throw lbm::ConfigError("isolated rotor: the ground height must be >= 0 m (0: no ground)");
+  if (!(c.climb >= 0) || !std::isfinite(c.climb))
+    throw lbm::ConfigError("isolated rotor: the climb rate must be a finite number >= 0 m/s (descents are not supported)");
+  if (c.climb > 0 && c.ground_height > 0)
+    throw lbm::ConfigError("isolated rotor: a climb over a ground plane has no steady state; give either a climb rate or a ground");
   LrmDomain d(cfg);
-  d.set_stream(rotor::Vec3(-c.speed, 0, 0));
+  d.set_stream(rotor::Vec3(-c.speed, 0, c.climb));
   if (c.fuselage) d.add_wall(std::make_shared<Fuselage>());
   if (c.ground_height > 0) {
     const double half = 0.5 * (d.cells_per_edge() - 1) * d.units().dx();
@@ -60,15 +64,16 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
     r.inflow.mean += in.mean / samples;
     r.inflow.sine += in.sine / samples;
     r.inflow.cosine += in.cosine / samples;
-    induced[static_cast<size_t>(k)] = in.mean.z();
+    induced[static_cast<size_t>(k)] = in.mean.z() - c.climb;
     if (c.centre_plane) plane.add(domain_slice(d, 1));
   }
   if (c.centre_plane) r.centre_plane = plane.mean();
+  r.induced_mean = r.inflow.mean.z() - c.climb;
   double square = 0, first = 0, second = 0;
   const long half = samples / 2;
   for (long k = 0; k < samples; ++k) {
     const double v = induced[static_cast<size_t>(k)];
-    square += (v - r.inflow.mean.z()) * (v - r.inflow.mean.z());
+    square += (v - r.induced_mean) * (v - r.induced_mean);
     if (k < half) first += v / half;
     if (k >= samples - half && half > 0) second += v / half;
   }
@@ -77,17 +82,16 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.steps = d.solver().steps_done();
   r.simulated_seconds = d.time();
-  r.induced_mean = r.inflow.mean.z();
   rotor::RotorDiskState s;
   s.radius = cfg.radius;
   s.rotor_speed = c.rotor_speed;
   s.density = cfg.density;
-  s.hub_velocity = rotor::Vec3(c.speed, 0, 0);
+  s.hub_velocity = rotor::Vec3(c.speed, 0, -c.climb);  // the hub moves up (-z) in a climb
   s.aero_force = rotor::Vec3(0, 0, -c.thrust);
   const Eigen::Vector3d lam = rotor::PittPetersInflow::steady_states(s, Eigen::Vector3d::Zero());
   r.pitt_peters_mean = lam[0] * c.rotor_speed * cfg.radius;
   r.pitt_peters_cosine = lam[2] * c.rotor_speed * cfg.radius;
-  r.momentum_theory = rotor::glauert_induced_velocity(c.thrust, cfg.density, cfg.radius, c.speed);
+  r.momentum_theory = rotor::momentum_induced_velocity(c.thrust, cfg.density, cfg.radius, c.speed, c.climb);
   return r;
 }
 

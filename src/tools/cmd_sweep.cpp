@@ -73,9 +73,11 @@ std::string tag(double v) {
   return s.str();
 }
 
-// "V = 10 m/s" or, above a ground, "V = 10 m/s, z/R = 0.5": a case in the progress line.
-std::string case_label(double speed, double height) {
-  return "V = " + tag(speed) + " m/s" + (height > 0 ? ", z/R = " + tag(height) : std::string());
+// "V = 10 m/s", above a ground "V = 10 m/s, z/R = 0.5", in a climb "V = 0 m/s, climb 5 m/s": a case
+// in the progress line and the summary.
+std::string case_label(double speed, double height, double climb = 0) {
+  return "V = " + tag(speed) + " m/s" + (height > 0 ? ", z/R = " + tag(height) : std::string()) +
+         (climb > 0 ? ", climb " + tag(climb) + " m/s" : std::string());
 }
 
 // One case with a progress line on stderr (it takes minutes to hours at N = 64 - 128).
@@ -205,9 +207,16 @@ std::function<int()> add_sweep_command(CLI::App& app) {
       sweep->add_subcommand("inflow", "Isolated rotor, uniform thrust, zero incidence: LRM inflow against Pitt-Peters (thesis 8.1)");
   struct Opts : IsolatedRotorOptions {
     std::string speeds = "0:5:65";
+    double climb = 0;
   };
   auto o = std::make_shared<Opts>();
   inflow->add_option("--speeds", o->speeds, "speeds in m/s: start:step:stop or a comma list")->capture_default_str();
+  inflow
+      ->add_option("--climb", o->climb,
+                   "axial climb rate in m/s for every case (air through the disk from above; in a pure climb momentum theory is "
+                   "exact for the uniformly loaded disk)")
+      ->check(CLI::Range(0.0, 200.0))
+      ->capture_default_str();
   o->add_to(*inflow, "inflow_sweep.csv, .png");
   auto run_ground = add_ground_sweep(*sweep);
   auto run_free_wake = add_free_wake_sweep(*sweep);
@@ -221,27 +230,33 @@ std::function<int()> add_sweep_command(CLI::App& app) {
     if (o->planes)
       for (double v : speeds) add_plane_outputs(outputs, "plane_V" + tag(v));
     prepare_output(dir, outputs, o->overwrite);
-    const auto case_config = [&](double v) { return lrm::config_for_stream(cfg, v); };
+    const auto case_config = [&](double v) { return lrm::config_for_stream(cfg, std::hypot(v, o->climb)); };
+    const auto rotor_case = [&](double v) {
+      lrm::IsolatedRotorCase c = o->rotor_case(v);
+      c.climb = o->climb;
+      return c;
+    };
     for (double v : speeds) {  // check every set-up before any long run
       lrm::LrmDomain probe(case_config(v));
-      probe.set_stream(rotor::Vec3(-v, 0, 0));
+      probe.set_stream(rotor::Vec3(-v, 0, o->climb));
     }
     std::ofstream csv(dir / "inflow_sweep.csv");
     csv << "speed_m_s,lrm_mean_m_s,lrm_cosine_m_s,lrm_sine_m_s,lrm_inplane_x_m_s,pitt_peters_mean_m_s,pitt_peters_cosine_m_s,"
            "momentum_theory_m_s,hover_momentum_theory_m_s,mean_over_pitt_peters,N,reach,cells_per_edge,time_step_s,steps,wall_s,"
-           "lrm_mean_std_m_s,lrm_mean_half_difference_m_s,faces\n";
+           "lrm_mean_std_m_s,lrm_mean_half_difference_m_s,faces,climb_m_s\n";
     const double vh = rotor::hover_induced_velocity(o->thrust, cfg.density, cfg.radius);
     for (double v : speeds) {
-      const auto r = run_with_progress(case_config(v), o->rotor_case(v), case_label(v, 0));
+      const auto r = run_with_progress(case_config(v), rotor_case(v), case_label(v, 0, o->climb));
       if (o->planes) write_plane(dir, "plane_V" + tag(v), r.centre_plane, cfg.radius, !o->no_plot);
-      std::cout << std::fixed << std::setprecision(3) << "V = " << v << " m/s: LRM mean " << r.induced_mean << " m/s, Pitt-Peters "
-                << r.pitt_peters_mean << " (ratio " << r.induced_mean / r.pitt_peters_mean << "); cosine " << r.inflow.cosine.z() << " vs "
-                << r.pitt_peters_cosine << "; " << r.steps << " steps in " << std::setprecision(1) << r.wall_seconds << " s\n";
+      std::cout << std::fixed << std::setprecision(3) << case_label(v, 0, o->climb) << ": LRM mean " << r.induced_mean
+                << " m/s, Pitt-Peters " << r.pitt_peters_mean << " (ratio " << r.induced_mean / r.pitt_peters_mean << "); cosine "
+                << r.inflow.cosine.z() << " vs " << r.pitt_peters_cosine << "; " << r.steps << " steps in " << std::setprecision(1)
+                << r.wall_seconds << " s\n";
       csv << std::setprecision(6) << v << "," << r.induced_mean << "," << r.inflow.cosine.z() << "," << r.inflow.sine.z() << ","
           << r.inflow.mean.x() << "," << r.pitt_peters_mean << "," << r.pitt_peters_cosine << "," << r.momentum_theory << "," << vh << ","
           << r.induced_mean / r.pitt_peters_mean << "," << cfg.nodes << "," << cfg.reach << "," << r.cells_per_edge << ","
           << r.simulated_seconds / r.steps << "," << r.steps << "," << r.wall_seconds << "," << r.induced_std << ","
-          << r.induced_half_difference << "," << o->face.label() << "\n";
+          << r.induced_half_difference << "," << o->face.label() << "," << o->climb << "\n";
       csv.flush();
     }
     csv.close();

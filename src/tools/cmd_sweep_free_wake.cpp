@@ -22,13 +22,16 @@ std::function<int()> add_free_wake_sweep(CLI::App& sweep) {
                                    "velocity over speed beside Glauert's (an independent reference for `sweep inflow`)");
   struct Opts {
     std::string speeds = "10,20,30,40";
-    double thrust = 24525, spacing = 0.03, length = 8, merge = 2, core = 0.03, settle = 1.5, average = 1.5;
+    double thrust = 24525, spacing = 0.03, length = 8, merge = 2, core = 0.03, settle = 1.5, average = 1.5, climb = 0;
     int ring_points = 48;
     std::string out, lrm;
     bool overwrite = false, no_plot = false;
   };
   auto o = std::make_shared<Opts>();
   cmd->add_option("--speeds", o->speeds, "edgewise speeds in m/s: start:step:stop or a comma list")->capture_default_str();
+  cmd->add_option("--climb", o->climb, "axial climb rate in m/s for every case (as `sweep inflow --climb`)")
+      ->check(CLI::Range(0.0, 200.0))
+      ->capture_default_str();
   cmd->add_option("--thrust", o->thrust, "N, uniform over the disk (radius and density: the LRM's)")
       ->check(CLI::Range(1.0, 1e6))
       ->capture_default_str();
@@ -60,7 +63,7 @@ std::function<int()> add_free_wake_sweep(CLI::App& sweep) {
     for (double v : speeds) {  // every case checked before any run
       rotor::FreeWakeDiskConfig c;
       c.radius = lrm_defaults.radius, c.density = lrm_defaults.density, c.thrust = o->thrust;
-      c.air = rotor::Vec3(-v, 0, 0);
+      c.air = rotor::Vec3(-v, 0, o->climb);
       c.ring_points = o->ring_points, c.core = o->core, c.settle = o->settle, c.average = o->average;
       rotor::set_wake_lengths(c, o->spacing, o->length, o->merge);
       if (c.wake_age / c.step > 20000 || c.step > 0.2)
@@ -73,11 +76,12 @@ std::function<int()> add_free_wake_sweep(CLI::App& sweep) {
     prepare_output(dir, {"free_wake_sweep.csv", "free_wake_sweep.png"}, o->overwrite);
     std::ofstream csv(dir / "free_wake_sweep.csv");
     csv << "speed_m_s,free_wake_mean_m_s,free_wake_min_m_s,free_wake_max_m_s,momentum_theory_m_s,hover_momentum_theory_m_s,"
-           "mean_over_momentum_theory,ring_points,spacing_R,wake_length_R,merge_length_R,core_R,rings,steps,wall_s\n";
+           "mean_over_momentum_theory,ring_points,spacing_R,wake_length_R,merge_length_R,core_R,rings,steps,wall_s,climb_m_s\n";
     for (std::size_t k = 0; k < cases.size(); ++k) {
       const auto start = std::chrono::steady_clock::now();
       std::ostringstream label;
       label << "V = " << speeds[k] << " m/s";
+      if (o->climb > 0) label << ", climb " << o->climb << " m/s";
       ProgressLine bar(label.str());
       cases[k].progress = [&bar](double fraction, double mean) {
         std::ostringstream now;
@@ -87,12 +91,12 @@ std::function<int()> add_free_wake_sweep(CLI::App& sweep) {
       const auto r = rotor::solve_free_wake_disk(cases[k]);
       bar.finish();
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::cout << std::fixed << std::setprecision(3) << "V = " << speeds[k] << " m/s: free wake " << r.mean << " m/s (" << r.min << " - "
-                << r.max << "), Glauert " << r.momentum << ", ratio " << std::setprecision(4) << r.mean / r.momentum << "; " << r.rings
+      std::cout << std::fixed << std::setprecision(3) << label.str() << ": free wake " << r.mean << " m/s (" << r.min << " - " << r.max
+                << "), momentum theory " << r.momentum << ", ratio " << std::setprecision(4) << r.mean / r.momentum << "; " << r.rings
                 << " rings, " << r.steps << " steps in " << std::setprecision(1) << wall << " s" << std::endl;
       csv << std::setprecision(6) << speeds[k] << "," << r.mean << "," << r.min << "," << r.max << "," << r.momentum << "," << r.hover
           << "," << r.mean / r.momentum << "," << o->ring_points << "," << o->spacing << "," << o->length << "," << o->merge << ","
-          << o->core << "," << r.rings << "," << r.steps << "," << wall << "\n";
+          << o->core << "," << r.rings << "," << r.steps << "," << wall << "," << o->climb << "\n";
       csv.flush();
     }
     csv.close();

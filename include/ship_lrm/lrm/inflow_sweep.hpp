@@ -11,7 +11,11 @@
 namespace ship_lrm::lrm {
 
 struct IsolatedRotorCase {
-  double speed = 0;           // m/s edgewise stream (the rotor flies forward at this speed)
+  double speed = 0;  // m/s edgewise stream (the rotor flies forward at this speed)
+  // m/s axial climb rate (>= 0): the air passes the disk downwards at this speed. Steady axial flow
+  // through a uniformly loaded disk is where momentum theory is exact (Froude's theorem), the cleanest
+  // check of the LRM's inflow; no ground with it (a climb over a ground plane has no steady state).
+  double climb = 0;
   double thrust = 24525;      // N, uniform over the disk (thesis 8.1: Bo 105 CBS-5 MTOW)
   double settle = 4.0;        // s simulated before averaging
   double average = 2.0;       // s averaged
@@ -41,13 +45,13 @@ double hayden_ratio(double z_over_R);
 
 struct IsolatedRotorResult {
   rotor::RotorInflow inflow;  // time average, m/s (relative to the domain)
-  double induced_mean = 0;    // inflow.mean.z (the stream has no z component)
+  double induced_mean = 0;    // inflow.mean.z less the climb rate: the induced velocity through the disk
   // How steady induced_mean is: the standard deviation of the samples (one every ~0.05 s) and the
   // difference of the means over the second and the first half of the averaging window (samples are
   // correlated, so the half-window difference, not std / sqrt(n), bounds the mean's uncertainty).
   double induced_std = 0, induced_half_difference = 0;
   double pitt_peters_mean = 0, pitt_peters_cosine = 0;  // m/s, steady Pitt-Peters for the same load
-  double momentum_theory = 0;                           // m/s, Glauert / hover momentum theory
+  double momentum_theory = 0;                           // m/s, Glauert / climb / hover momentum theory
   long steps = 0;
   double wall_seconds = 0, simulated_seconds = 0;
   int cells_per_edge = 0;
