@@ -2,6 +2,8 @@
 // free vortex-ring wake (rotor/free_wake_disk.hpp) over edgewise speeds, beside Glauert's formula: an
 // independent reference for `sweep inflow` (CSV + PNG).
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -57,7 +59,19 @@ std::function<int()> add_free_wake_sweep(CLI::App& sweep) {
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
     const auto speeds = parse_speeds(o->speeds);
-    if (!o->lrm.empty()) check_csv_columns(o->lrm, "--lrm", {"N", "reach", "speed_m_s", "lrm_mean_m_s", "momentum_theory_m_s"});
+    if (!o->lrm.empty()) {
+      check_csv_columns(o->lrm, "--lrm", {"N", "reach", "speed_m_s", "lrm_mean_m_s", "momentum_theory_m_s"});
+      // the LRM's sweep must have flown the same climb (a sweep from before --climb had none)
+      std::ostringstream ours;
+      ours << o->climb;
+      for (const std::string& text : csv_column(o->lrm, "--lrm", "climb_m_s").value_or(std::vector<std::string>{"0"})) {
+        char* end = nullptr;
+        const double climb = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || !(std::abs(climb - o->climb) <= 1e-6 * std::max(1.0, o->climb)))
+          throw CLI::ValidationError("--lrm", "'" + o->lrm + "' was swept at a climb of " + text + " m/s, this sweep at " + ours.str() +
+                                                  " m/s (--climb): the two would not be comparable");
+      }
+    }
     const lrm::LrmConfig lrm_defaults;
     std::vector<rotor::FreeWakeDiskConfig> cases;
     for (double v : speeds) {  // every case checked before any run

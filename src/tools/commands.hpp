@@ -5,6 +5,7 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,9 @@ std::vector<double> parse_speeds(const std::string& text);
 // Checks before any run that `path` (given to `option`) is a readable CSV file whose header row
 // names every one of `columns`; CLI::ValidationError otherwise.
 void check_csv_columns(const std::string& path, const std::string& option, const std::vector<std::string>& columns);
+// The values of `column` in every data row of that file, as written; std::nullopt when the header
+// has no such column (CLI::ValidationError when the file cannot be read).
+std::optional<std::vector<std::string>> csv_column(const std::string& path, const std::string& option, const std::string& column);
 // scripts/plot_flight.py <kind> csv png [--reference ref]; a failure is a warning, the CSV stays.
 void plot(const std::string& kind, const std::filesystem::path& csv, const std::filesystem::path& png, const std::string& reference);
 // Runs a shipped script from scripts/ with Debian's python3 (the one with matplotlib, numpy and

@@ -20,19 +20,47 @@ bool run_script(const std::string& script, const std::string& args) {
   return std::system(cmd.c_str()) == 0;
 }
 
-void check_csv_columns(const std::string& path, const std::string& option, const std::vector<std::string>& columns) {
+namespace {
+// The comma-separated fields of one line (a trailing carriage return dropped).
+std::vector<std::string> csv_fields(std::string line) {
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  std::vector<std::string> fields;
+  std::stringstream ss(line);
+  for (std::string field; std::getline(ss, field, ',');) fields.push_back(field);
+  return fields;
+}
+
+// The header row of the CSV file given to `option`; CLI::ValidationError when it cannot be read.
+std::vector<std::string> csv_header(std::ifstream& f, const std::string& path, const std::string& option) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw CLI::ValidationError(option, "'" + path + "' is not a file");
-  std::ifstream f(path);
+  f.open(path);
   std::string header;
   if (!f || !std::getline(f, header)) throw CLI::ValidationError(option, "cannot read '" + path + "'");
-  if (!header.empty() && header.back() == '\r') header.pop_back();
-  std::vector<std::string> names;
-  std::stringstream ss(header);
-  for (std::string name; std::getline(ss, name, ',');) names.push_back(name);
+  return csv_fields(header);
+}
+}  // namespace
+
+void check_csv_columns(const std::string& path, const std::string& option, const std::vector<std::string>& columns) {
+  std::ifstream f;
+  const std::vector<std::string> names = csv_header(f, path, option);
   for (const std::string& c : columns)
     if (std::find(names.begin(), names.end(), c) == names.end())
       throw CLI::ValidationError(option, "'" + path + "' has no column '" + c + "' in its header row");
+}
+
+std::optional<std::vector<std::string>> csv_column(const std::string& path, const std::string& option, const std::string& column) {
+  std::ifstream f;
+  const std::vector<std::string> names = csv_header(f, path, option);
+  const auto at = std::find(names.begin(), names.end(), column);
+  if (at == names.end()) return std::nullopt;
+  const auto index = static_cast<std::size_t>(at - names.begin());
+  std::vector<std::string> values;
+  for (std::string line; std::getline(f, line);) {
+    const std::vector<std::string> fields = csv_fields(line);
+    if (!fields.empty()) values.push_back(index < fields.size() ? fields[index] : std::string());
+  }
+  return values;
 }
 
 // Plot with Debian's python3 + matplotlib; a missing plotter is a warning, the CSV stays.

@@ -37,6 +37,8 @@ expect "--heights: values must lie in" sweep ground --heights=-1 --N 16 --out "$
 expect "--speeds applies to --mode forward" sweep ground --mode hover --speeds 10 --N 16 --out "$dir/d"
 expect "--climb: Value -1 not in range" sweep inflow --climb -1 --speeds 0 --N 16 --out "$dir/d"
 expect "--climb: 'nan' is not a finite number" sweep free-wake --climb nan --speeds 0 --out "$dir/f"
+printf 'N,reach,speed_m_s,lrm_mean_m_s,momentum_theory_m_s,climb_m_s\n64,1.25,0,7.18,7.19,11.62\n' > "$dir/climb.csv"
+expect "was swept at a climb of 11.62 m/s" sweep free-wake --speeds 0 --lrm "$dir/climb.csv" --out "$dir/f"
 expect "--reference: '$dir/other.csv' has no column 'speed_m_s'" trim --speeds 10 --reference "$dir/other.csv" --out "$dir/e"
 expect "--lrm: '$dir/other.csv' has no column 'N'" sweep free-wake --speeds 40 --lrm "$dir/other.csv" --out "$dir/f"
 expect "is a directory, not a parameter file" trim --speeds 10 --config "$dir" --out "$dir/g"
