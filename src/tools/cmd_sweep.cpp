@@ -66,20 +66,6 @@ struct IsolatedRotorOptions {
   }
 };
 
-// "6", "0.5": a number as it appears in a file name.
-std::string tag(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-// "V = 10 m/s", above a ground "V = 10 m/s, z/R = 0.5", in a climb "V = 0 m/s, climb 5 m/s": a case
-// in the progress line and the summary.
-std::string case_label(double speed, double height, double climb = 0) {
-  return "V = " + tag(speed) + " m/s" + (height > 0 ? ", z/R = " + tag(height) : std::string()) +
-         (climb > 0 ? ", climb " + tag(climb) + " m/s" : std::string());
-}
-
 // One case with a progress line on stderr (it takes minutes to hours at N = 64 - 128).
 lrm::IsolatedRotorResult run_with_progress(const lrm::LrmConfig& cfg, lrm::IsolatedRotorCase c, const std::string& label) {
   ProgressLine bar(label);

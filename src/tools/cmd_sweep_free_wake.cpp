@@ -93,10 +93,8 @@ std::function<int()> add_free_wake_sweep(CLI::App& sweep) {
            "mean_over_momentum_theory,ring_points,spacing_R,wake_length_R,merge_length_R,core_R,rings,steps,wall_s,climb_m_s\n";
     for (std::size_t k = 0; k < cases.size(); ++k) {
       const auto start = std::chrono::steady_clock::now();
-      std::ostringstream label;
-      label << "V = " << speeds[k] << " m/s";
-      if (o->climb > 0) label << ", climb " << o->climb << " m/s";
-      ProgressLine bar(label.str());
+      const std::string label = case_label(speeds[k], 0, o->climb);
+      ProgressLine bar(label);
       cases[k].progress = [&bar](double fraction, double mean) {
         std::ostringstream now;
         now << std::fixed << std::setprecision(3) << "mean " << mean << " m/s";
@@ -105,7 +103,7 @@ std::function<int()> add_free_wake_sweep(CLI::App& sweep) {
       const auto r = rotor::solve_free_wake_disk(cases[k]);
       bar.finish();
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::cout << std::fixed << std::setprecision(3) << label.str() << ": free wake " << r.mean << " m/s (" << r.min << " - " << r.max
+      std::cout << std::fixed << std::setprecision(3) << label << ": free wake " << r.mean << " m/s (" << r.min << " - " << r.max
                 << "), momentum theory " << r.momentum << ", ratio " << std::setprecision(4) << r.mean / r.momentum << "; " << r.rings
                 << " rings, " << r.steps << " steps in " << std::setprecision(1) << wall << " s" << std::endl;
       csv << std::setprecision(6) << speeds[k] << "," << r.mean << "," << r.min << "," << r.max << "," << r.momentum << "," << r.hover

@@ -63,6 +63,11 @@ std::function<int()> add_free_wake_sweep(CLI::App& sweep);
 // Shared by the sweep commands (cmd_flight.cpp):
 // parse_number_list in 0..100 m/s as --speeds.
 std::vector<double> parse_speeds(const std::string& text);
+// "6", "0.5": a number as it appears in a file name or a label.
+std::string tag(double v);
+// "V = 10 m/s", above a ground "V = 10 m/s, z/R = 0.5", in a climb "V = 0 m/s, climb 5 m/s": a sweep's
+// case in its progress line and summary.
+std::string case_label(double speed, double height = 0, double climb = 0);
 // Checks before any run that `path` (given to `option`) is a readable CSV file whose header row
 // names every one of `columns`; CLI::ValidationError otherwise.
 void check_csv_columns(const std::string& path, const std::string& option, const std::vector<std::string>& columns);

@@ -41,6 +41,17 @@ std::vector<std::string> csv_header(std::ifstream& f, const std::string& path, c
 }
 }  // namespace
 
+std::string tag(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+std::string case_label(double speed, double height, double climb) {
+  return "V = " + tag(speed) + " m/s" + (height > 0 ? ", z/R = " + tag(height) : std::string()) +
+         (climb > 0 ? ", climb " + tag(climb) + " m/s" : std::string());
+}
+
 void check_csv_columns(const std::string& path, const std::string& option, const std::vector<std::string>& columns) {
   std::ifstream f;
   const std::vector<std::string> names = csv_header(f, path, option);
