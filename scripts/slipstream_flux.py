@@ -61,6 +61,8 @@ def sweep_values(plane_path):
     if not os.path.isfile(path):
         return None, None
     data = np.atleast_1d(np.genfromtxt(path, delimiter=",", names=True, dtype=None, encoding="utf-8"))
+    if data.dtype.names is None or "speed_m_s" not in data.dtype.names or "hover_momentum_theory_m_s" not in data.dtype.names:
+        fail(f"{path}: not an inflow_sweep.csv of `sweep inflow` (give --climb and --hover-induced)")
     rows = [r for r in data if abs(float(r["speed_m_s"])) < 1e-9]
     if not rows:
         return None, None
@@ -95,7 +97,7 @@ def profile(xs, zs, grid, radius, climb, v, radii):
         half = float("nan")
         right = xs >= 0
         xr, wr = xs[right], col[right]
-        for i in range(len(xr) - 1):
+        for i in range(len(xr) - 1 if axis > 0 else 0):  # only where the axis carries induced flow
             if wr[i] >= axis / 2 > wr[i + 1]:
                 half = (xr[i] + (wr[i] - axis / 2) / (wr[i] - wr[i + 1]) * (xr[i + 1] - xr[i])) / radius
                 break

@@ -2,7 +2,8 @@
 """The slipstream profile (scripts/slipstream_flux.py) on synthetic planes with analytic answers: a
 top-hat slipstream of radius 0.8 R (induced flux 0.64 u0 / v through any disc wider than it, half-velocity
 radius 0.8 R) and a paraboloid u0 (1 - r^2 / R_w^2) (flux u0 pi R_w^2 / 2); the climb rate and v_h read
-from inflow_sweep.csv beside the plane; a forward-flight plane, a missing file and bad radii refused."""
+from inflow_sweep.csv beside the plane; a forward-flight plane, a foreign inflow_sweep.csv, a missing file
+and bad radii refused."""
 import csv
 import math
 import os
@@ -83,7 +84,10 @@ with tempfile.TemporaryDirectory() as d:
             failures.append(f"paraboloid: r_half {row['r_half_over_R']}, expected {0.9 / math.sqrt(2):.4f}")
     # refusals: forward flight, no file, bad radii; each a message, not a traceback
     write_plane(plane, 0.1, lambda r: 0.0, ux=-10.0)
-    for args, words in [([plane], "not axial flight"), ([os.path.join(d, "none.csv")], "no such file"),
+    with open(os.path.join(d, "inflow_sweep.csv"), "w") as f:
+        f.write("speed,other\n0,1\n")
+    for args, words in [([plane], "not an inflow_sweep.csv"), ([plane, "--climb", "0", "--hover-induced", "11"], "not axial flight"),
+                        ([os.path.join(d, "none.csv")], "no such file"),
                         ([plane, "--radii", "1,x"], "comma list"), ([plane, "--radii", "-1"], "positive")]:
         r = run(args)
         if r.returncode == 0 or words not in r.stderr or "Traceback" in r.stderr:
