@@ -2,11 +2,11 @@
 """The slipstream of an isolated rotor in axial flight (hover or climb), read from the time-averaged
 centre plane that `ship_lrm sweep inflow --speeds 0 [--climb V_C] --planes` writes (plane_V0.csv).
 
-  slipstream_flux.py PLANE.csv [--climb V_C] [--hover-induced V_H] [--radii 1,1.5,2] [--out CSV] [--png PNG]
+  slipstream_flux.py PLANE.csv [--climb V_C --induced V] [--radii 1,1.5,2] [--out CSV] [--png PNG]
 
 For each layer of the plane (z from the hub, positive downstream) it prints and writes:
 - the axial induced velocity on the axis, (w - V_c) / v, with v momentum theory's induced velocity at
-  the disk for this climb rate (Froude: v = -V_c / 2 + sqrt(V_c^2 / 4 + v_h^2), v_h^2 = T / (2 rho A));
+  the disk for this climb rate (the sweep's momentum_theory_m_s);
 - the induced volume flux through discs of radius r_c about the axis, Q(r_c) = integral over r < r_c of
   (w - V_c) 2 pi r dr, over A v (A = pi R^2), the plane taken as axisymmetric (both sides averaged);
 - the half-velocity radius r_half / R, where w - V_c has fallen to half its value on the axis.
@@ -17,8 +17,8 @@ carries an induced velocity of 2 v, so its induced flux is 2 (V_c + v) / (V_c + 
 and stays so downstream. A flux through a wide disc that keeps growing downstream is air the
 slipstream's shear layer entrains (a viscous or turbulent wake; docs/benchmarks.md, session 49).
 
-The climb rate and v_h are read from inflow_sweep.csv beside the plane when not given (its climb_m_s
-and hover_momentum_theory_m_s columns). The plane must be of axial flight: a mean in-plane velocity
+The climb rate and v are read from inflow_sweep.csv beside the plane unless both are given (its
+climb_m_s and momentum_theory_m_s columns). The plane must be of axial flight: a mean in-plane velocity
 u_x of more than 2 % of v is refused (a forward-flight wake is not axisymmetric).
 """
 import argparse
@@ -56,18 +56,17 @@ def load_plane(path):
 
 
 def sweep_values(plane_path):
-    """climb_m_s and hover_momentum_theory_m_s of the V = 0 row of inflow_sweep.csv beside the plane."""
+    """climb_m_s and momentum_theory_m_s of the V = 0 row of inflow_sweep.csv beside the plane."""
     path = os.path.join(os.path.dirname(os.path.abspath(plane_path)), "inflow_sweep.csv")
     if not os.path.isfile(path):
         return None, None
     data = np.atleast_1d(np.genfromtxt(path, delimiter=",", names=True, dtype=None, encoding="utf-8"))
-    if data.dtype.names is None or "speed_m_s" not in data.dtype.names or "hover_momentum_theory_m_s" not in data.dtype.names:
-        fail(f"{path}: not an inflow_sweep.csv of `sweep inflow` (give --climb and --hover-induced)")
+    if data.dtype.names is None or any(n not in data.dtype.names for n in ("speed_m_s", "momentum_theory_m_s", "climb_m_s")):
+        fail(f"{path}: not an inflow_sweep.csv of `sweep inflow` (give --climb and --induced)")
     rows = [r for r in data if abs(float(r["speed_m_s"])) < 1e-9]
     if not rows:
         return None, None
-    climb = float(rows[0]["climb_m_s"]) if "climb_m_s" in data.dtype.names else 0.0
-    return climb, float(rows[0]["hover_momentum_theory_m_s"])
+    return float(rows[0]["climb_m_s"]), float(rows[0]["momentum_theory_m_s"])
 
 
 def disc_weights(xs, radius_limit):
@@ -109,7 +108,7 @@ def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("plane", help="plane_V0.csv of `ship_lrm sweep inflow --speeds 0 --planes`")
     p.add_argument("--climb", type=float, help="m/s, the climb rate (default: inflow_sweep.csv beside the plane)")
-    p.add_argument("--hover-induced", type=float, help="m/s, v_h = sqrt(T / (2 rho A)) (default: inflow_sweep.csv)")
+    p.add_argument("--induced", type=float, help="m/s, momentum theory's induced velocity at the disk (default: inflow_sweep.csv)")
     p.add_argument("--radii", default="1,1.5,2", help="disc radii / R for the flux (comma list)")
     p.add_argument("--out", help="write the profile as CSV")
     p.add_argument("--png", help="plot the profile")
@@ -121,16 +120,15 @@ def main():
     if not radii or any(not (r > 0 and math.isfinite(r)) for r in radii):
         fail(f"--radii '{a.radii}': every radius must be a positive number")
     xs, zs, grid, radius = load_plane(a.plane)
-    climb, vh = a.climb, a.hover_induced
-    if climb is None or vh is None:
-        sweep_climb, sweep_vh = sweep_values(a.plane)
+    climb, v = a.climb, a.induced
+    if climb is None or v is None:
+        sweep_climb, sweep_v = sweep_values(a.plane)
         climb = sweep_climb if climb is None else climb
-        vh = sweep_vh if vh is None else vh
-    if climb is None or vh is None:
-        fail("no inflow_sweep.csv with a V = 0 row beside the plane: give --climb and --hover-induced")
-    if not (vh > 0 and climb >= 0):
-        fail(f"need --hover-induced > 0 and --climb >= 0 (got {vh}, {climb})")
-    v = -climb / 2 + math.sqrt(climb**2 / 4 + vh**2)
+        v = sweep_v if v is None else v
+    if climb is None or v is None:
+        fail("no inflow_sweep.csv with a V = 0 row beside the plane: give --climb and --induced")
+    if not (v > 0 and climb >= 0):
+        fail(f"need --induced > 0 and --climb >= 0 (got {v}, {climb})")
     fluid = grid["wall"] == 0
     mean_ux = float(np.mean(grid["u_x_m_s"][fluid]))
     if abs(mean_ux) > 0.02 * v:

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The slipstream profile (scripts/slipstream_flux.py) on synthetic planes with analytic answers: a
 top-hat slipstream of radius 0.8 R (induced flux 0.64 u0 / v through any disc wider than it, half-velocity
-radius 0.8 R) and a paraboloid u0 (1 - r^2 / R_w^2) (flux u0 pi R_w^2 / 2); the climb rate and v_h read
+radius 0.8 R) and a paraboloid u0 (1 - r^2 / R_w^2) (flux u0 pi R_w^2 / 2); the climb rate and v read
 from inflow_sweep.csv beside the plane; a forward-flight plane, a foreign inflow_sweep.csv, a missing file
 and bad radii refused."""
 import csv
@@ -46,7 +46,7 @@ with tempfile.TemporaryDirectory() as d:
     plane = os.path.join(d, "plane_V0.csv")
     write_plane(plane, 0.1, lambda r: u0 if r < 0.8 else 0.0)
     out = os.path.join(d, "p.csv")
-    r = run([plane, "--climb", str(climb), "--hover-induced", str(vh), "--radii", "0.5,1,2", "--out", out, "--png", os.path.join(d, "p.png")])
+    r = run([plane, "--climb", str(climb), "--induced", str(v), "--radii", "0.5,1,2", "--out", out, "--png", os.path.join(d, "p.png")])
     if r.returncode != 0:
         failures.append(f"top hat: exit {r.returncode}: {r.stderr}")
     else:
@@ -65,11 +65,11 @@ with tempfile.TemporaryDirectory() as d:
                 failures.append(f"top hat: {name} {row[name]}, expected {want:.6g}")
         if not os.path.getsize(os.path.join(d, "p.png")) > 0:
             failures.append("top hat: no PNG")
-    # paraboloid, fine columns: the annulus rule's error is O(dx^2); climb and v_h from inflow_sweep.csv
+    # paraboloid, fine columns: the annulus rule's error is O(dx^2); climb and v from inflow_sweep.csv
     write_plane(plane, 0.01, lambda r: u0 * (1 - (r / 0.9) ** 2) if r < 0.9 else 0.0)
     with open(os.path.join(d, "inflow_sweep.csv"), "w") as f:
-        f.write("speed_m_s,hover_momentum_theory_m_s,faces,climb_m_s\n")
-        f.write(f"0,{vh},thesis,{climb}\n")
+        f.write("speed_m_s,momentum_theory_m_s,faces,climb_m_s\n")
+        f.write(f"0,{v},thesis,{climb}\n")
     r = run([plane, "--out", out])
     if r.returncode != 0:
         failures.append(f"paraboloid: exit {r.returncode}: {r.stderr}")
@@ -86,7 +86,7 @@ with tempfile.TemporaryDirectory() as d:
     write_plane(plane, 0.1, lambda r: 0.0, ux=-10.0)
     with open(os.path.join(d, "inflow_sweep.csv"), "w") as f:
         f.write("speed,other\n0,1\n")
-    for args, words in [([plane], "not an inflow_sweep.csv"), ([plane, "--climb", "0", "--hover-induced", "11"], "not axial flight"),
+    for args, words in [([plane], "not an inflow_sweep.csv"), ([plane, "--climb", "0", "--induced", "11"], "not axial flight"),
                         ([os.path.join(d, "none.csv")], "no such file"),
                         ([plane, "--radii", "1,x"], "comma list"), ([plane, "--radii", "-1"], "positive")]:
         r = run(args)
