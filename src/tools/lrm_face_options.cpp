@@ -1,4 +1,4 @@
-// The LRM domain's face options of the command-line tools (see lrm_face_options.hpp).
+// The LRM domain's face and lattice options of the command-line tools (see lrm_face_options.hpp).
 #include "lrm_face_options.hpp"
 
 #include <sstream>
@@ -36,6 +36,11 @@ void LrmFaceOptions::add_to(CLI::App& cmd) {
                  "damps the grid-scale mode where the inflow face meets a moving ground")
       ->check(CLI::Range(0, 16))
       ->capture_default_str();
+  cmd.add_option("--smagorinsky", smagorinsky,
+                 "Smagorinsky constant s of the LRM's subgrid viscosity (thesis 6.1: 0.05; 0: none, which at the LRM's lattice "
+                 "Mach number lets BGK's stream grow noise)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
 }
 
 void refuse_lrm_options(const CLI::App& cmd, std::initializer_list<const char*> others) {
@@ -43,8 +48,8 @@ void refuse_lrm_options(const CLI::App& cmd, std::initializer_list<const char*> 
     if (cmd.get_option(name)->count() > 0) throw CLI::ValidationError(name, "applies to the LRM only: add --inflow lrm");
   };
   for (const char* name : others) refuse(name);
-  for (const char* name :
-       {"--faces", "--outlet-sigma", "--relaxed-faces", "--rotor-far-field", "--collision", "--characteristic-inlets", "--absorbing-layer"})
+  for (const char* name : {"--faces", "--outlet-sigma", "--relaxed-faces", "--rotor-far-field", "--collision", "--characteristic-inlets",
+                           "--absorbing-layer", "--smagorinsky"})
     refuse(name);
 }
 
@@ -59,6 +64,7 @@ std::string LrmFaceOptions::label() const {
   if (collision != "bgk") s << ";" << collision;
   if (characteristic_inlets) s << ";characteristic-inlets";
   if (absorbing_layer > 0) s << ";absorbing-layer=" << absorbing_layer;
+  if (smagorinsky != lrm::LrmConfig{}.smagorinsky) s << ";smagorinsky=" << smagorinsky;
   return s.str();
 }
 
@@ -69,6 +75,7 @@ void LrmFaceOptions::apply(lrm::LrmConfig& cfg) const {
   cfg.collision = lbm::parse_collision_model(collision);
   cfg.characteristic_inlets = characteristic_inlets;
   cfg.absorbing_layer = absorbing_layer;
+  cfg.smagorinsky = smagorinsky;
 }
 
 }  // namespace ship_lrm::tools

@@ -1,6 +1,7 @@
-// The LRM domain's face options of the command-line tools (`sweep inflow`, `sweep ground`, `trim
+// The LRM domain's face and lattice options of the command-line tools (`sweep inflow`, `sweep ground`, `trim
 // --inflow lrm`): the set-up of the six faces, the impedance faces' relaxation to the ambient
-// pressure and the rotor's own far field in the faces' air (lrm::LrmConfig).
+// pressure, the rotor's own far field in the faces' air, the collision and its Smagorinsky constant
+// (lrm::LrmConfig).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -19,12 +20,15 @@ struct LrmFaceOptions {
   std::string collision = "bgk";
   bool characteristic_inlets = false;
   int absorbing_layer = 0;
+  double smagorinsky = lrm::LrmConfig{}.smagorinsky;  // thesis 6.1
 
-  // --faces, --outlet-sigma, --relaxed-faces, --rotor-far-field, --collision, --characteristic-inlets
+  // --faces, --outlet-sigma, --relaxed-faces, --rotor-far-field, --collision, --characteristic-inlets,
+  // --absorbing-layer, --smagorinsky
   void add_to(CLI::App& cmd);
   // The faces column of the CSVs: the set-up, the relaxed outlets when there are any, the far field.
   std::string label() const;
-  // Sets cfg's faces, outlet relaxation, far field and collision; lbm::ConfigError for an unknown set-up.
+  // Sets cfg's faces, outlet relaxation, far field, collision and Smagorinsky constant; lbm::ConfigError
+  // for an unknown set-up.
   void apply(lrm::LrmConfig& cfg) const;
 };
 
