@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "ship_lrm/lbm/cell_ops.hpp"
 #include "ship_lrm/lbm/column_series.hpp"
 #include "ship_lrm/lbm/refill.hpp"
 
@@ -26,16 +27,16 @@ CollisionModel parse_collision_model(const std::string& s) {
 
 const char* to_string(CollisionModel m) { return m == CollisionModel::Bgk ? "bgk" : "recursive"; }
 
-static std::string divergence_message(long step, int x, int y, int z, float speed, float limit) {
+static std::string divergence_message(long step, int x, int y, int z, float density, float speed, float limit) {
   std::ostringstream s;
-  s << "LBM diverged at step " << step << ", cell (" << x << ", " << y << ", " << z << "): speed " << speed
-    << " (lattice units) is not finite or above the guard limit " << limit
-    << "; lower the lattice velocity, raise the resolution or the Smagorinsky constant";
+  s << "LBM diverged at step " << step << ", cell (" << x << ", " << y << ", " << z << "): density " << density << ", speed " << speed
+    << " (lattice units; the guard wants a density > 0 and a finite speed up to " << limit
+    << "); lower the lattice velocity, raise the resolution or the Smagorinsky constant";
   return s.str();
 }
 
-DivergenceError::DivergenceError(long step_, int x_, int y_, int z_, float speed, float limit)
-    : std::runtime_error(divergence_message(step_, x_, y_, z_, speed, limit)), step(step_), x(x_), y(y_), z(z_) {}
+DivergenceError::DivergenceError(long step_, int x_, int y_, int z_, float density, float speed, float limit)
+    : std::runtime_error(divergence_message(step_, x_, y_, z_, density, speed, limit)), step(step_), x(x_), y(y_), z(z_) {}
 
 Solver::Solver(Lattice lattice) : lattice_(std::move(lattice)) {
   lattice_.finalize();
@@ -213,8 +214,8 @@ bool Solver::change_walls(Lattice& next, bool restart_flow) {
     const long bad = first_invalid_setup_cell(f.rho, f.u, &speed);
     if (bad >= 0) {  // the flow itself is beyond the set-up limits: it has diverged (nothing changed)
       const long nx = was.nx(), ny = was.ny();
-      throw DivergenceError(steps_, static_cast<int>(bad % nx), static_cast<int>((bad / nx) % ny), static_cast<int>(bad / (nx * ny)), speed,
-                            max_setup_speed());
+      throw DivergenceError(steps_, static_cast<int>(bad % nx), static_cast<int>((bad / nx) % ny), static_cast<int>(bad / (nx * ny)),
+                            f.rho[bad], speed, max_setup_speed());
     }
     do_change_walls(std::move(next), {}, {});
     view_.nheld = static_cast<int>(lattice_.held_cells().size());
@@ -349,11 +350,18 @@ void Solver::check_divergence() {
   const float limit = lattice_.config().mach_guard * std::sqrt(d3q19::cs2);
   const long long c = do_find_divergent(steps_ % 2 == 1, limit);
   if (c < 0) return;
-  const Fields f = fields();  // only on failure: the full (streamed) state of the cell for the message
+  // only on failure: the moments the guard tested, from the cell's own populations (an open-boundary
+  // cell's fields() would report the state its condition imposed last step instead); between steps a
+  // cell's populations sit in its own slots, in opposite order after an odd step, which flips j only
+  const std::vector<float> g = populations();
+  const std::size_t n = lattice_.cells();
+  float gc[d3q19::Q], rho, j[3];
+  for (int i = 0; i < d3q19::Q; ++i) gc[i] = g[static_cast<std::size_t>(i) * n + static_cast<std::size_t>(c)];
+  moments(gc, rho, j);
   const int nx = lattice_.nx(), ny = lattice_.ny();
-  const float* u = &f.u[3 * c];
   throw DivergenceError(steps_, static_cast<int>(c % nx), static_cast<int>((c / nx) % ny),
-                        static_cast<int>(c / (static_cast<long long>(nx) * ny)), std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]), limit);
+                        static_cast<int>(c / (static_cast<long long>(nx) * ny)), rho,
+                        std::sqrt(j[0] * j[0] + j[1] * j[1] + j[2] * j[2]) / rho, limit);
 }
 
 std::unique_ptr<Solver> make_solver(Lattice lattice, Backend backend) {

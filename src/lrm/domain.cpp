@@ -284,8 +284,8 @@ void LrmDomain::rebuild(bool carry_flow, bool near_faces) {
       const long c = lbm::first_invalid_setup_cell(rho, u, &speed);
       if (c < 0) throw;
       const long e = edge_;
-      throw lbm::DivergenceError(steps_, static_cast<int>(c % e), static_cast<int>((c / e) % e), static_cast<int>(c / (e * e)), speed,
-                                 lbm::max_setup_speed());
+      throw lbm::DivergenceError(steps_, static_cast<int>(c % e), static_cast<int>((c / e) % e), static_cast<int>(c / (e * e)), rho[c],
+                                 speed, lbm::max_setup_speed());
     }
   } else
     solver_->initialize({}, {});

@@ -118,6 +118,7 @@ TEST(DivergenceGuard, NamesStepAndCell) {
     EXPECT_LT(e.step, 10);
     EXPECT_NE(std::string(e.what()).find("step"), std::string::npos);
     EXPECT_NE(std::string(e.what()).find("cell"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("density"), std::string::npos);
   }
 }
 

@@ -19,10 +19,11 @@ CollisionModel parse_collision_model(const std::string& s);  // "bgk", "recursiv
 const char* to_string(CollisionModel m);
 bool cuda_available();  // compiled with CUDA and a device is present
 
-// Raised by the divergence guard: names the step and the first offending cell.
+// Raised by the divergence guard: names the step, the first offending cell and the density and speed
+// the guard found there (lattice units; the guard wants a density > 0 and a speed up to `limit`).
 class DivergenceError : public std::runtime_error {
  public:
-  DivergenceError(long step, int x, int y, int z, float speed, float limit);
+  DivergenceError(long step, int x, int y, int z, float density, float speed, float limit);
   long step;
   int x, y, z;
 };
