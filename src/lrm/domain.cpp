@@ -119,7 +119,7 @@ void LrmDomain::update_walls() {
   std::vector<std::int16_t> owner(owner_.size(), -1), inside(owner_.size(), -1);
   std::vector<bool> moves(walls_.size());
   for (size_t w = 0; w < walls_.size(); ++w) {
-    moves[w] = walls_[w]->motion().moving();
+    moves[w] = builds_as_moving_wall(*walls_[w]);
   }
   std::vector<bool> clear(walls_.size());
   for (size_t w = 0; w < walls_.size(); ++w) clear[w] = walls_[w]->clear_of_faces();
@@ -216,8 +216,30 @@ void LrmDomain::push_face_values() {
 
 void LrmDomain::update_wall_motions() {
   for (size_t w = 0; w < walls_.size(); ++w)
-    if (wall_moves_[w] != walls_[w]->motion().moving()) return update_walls();
+    if (wall_moves_[w] != builds_as_moving_wall(*walls_[w])) return update_walls();
   push_wall_motions();
+}
+
+bool LrmDomain::builds_as_moving_wall(const WallSurface& wall) const {
+  const RigidMotion m = wall.motion();
+  if (!wall.slip()) return m.moving();
+  // Specular reflection imposes no tangential velocity, so a slip body may slide along itself (the
+  // ground passing under a rotor in forward flight), never move across itself.
+  if (wall.clear_of_faces())
+    throw lbm::ConfigError("LRM: the slip wall '" + wall.name() +
+                           "' cannot be kept clear of the faces (the air held inside it does not slide with a slip wall)");
+  if (!m.omega.isZero(0))
+    throw lbm::ConfigError("LRM: the slip wall '" + wall.name() +
+                           "' turns relative to the domain; a slip wall may only slide along itself");
+  // the surface's normal from the signed distance's gradient at the hub (exact for a plane)
+  const double h = units_.dx();
+  Vec3 normal;
+  for (int a = 0; a < 3; ++a) normal[a] = (wall.signed_distance(h * Vec3::Unit(a)) - wall.signed_distance(-h * Vec3::Unit(a))) / (2 * h);
+  const double across = normal.norm() > 0 ? m.velocity.dot(normal.normalized()) : m.velocity.norm();
+  if (!(std::abs(across) <= 1e-9 * (1.0 + m.velocity.norm())))
+    throw lbm::ConfigError("LRM: the slip wall '" + wall.name() + "' moves across itself at " + std::to_string(across) +
+                           " m/s; a slip wall may only slide along itself");
+  return false;
 }
 
 int LrmDomain::face_layer(std::size_t c) const {
@@ -243,6 +265,8 @@ void LrmDomain::rebuild(bool carry_flow, bool near_faces) {
         if (w < 0) continue;
         if (slot[w] >= 0)
           lat.set_moving_wall(i, j, k, slot[w]);
+        else if (walls_[w]->slip())
+          lat.set_slip_wall(i, j, k);
         else
           lat.set_wall(i, j, k);
       }

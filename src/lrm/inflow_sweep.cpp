@@ -18,6 +18,7 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
   if (!(c.ground_height >= 0)) throw lbm::ConfigError("isolated rotor: the ground height must be >= 0 m (0: no ground)");
   if (!(c.climb >= 0) || !std::isfinite(c.climb))
     throw lbm::ConfigError("isolated rotor: the climb rate must be a finite number >= 0 m/s (descents are not supported)");
+  if (c.slip_ground && !(c.ground_height > 0)) throw lbm::ConfigError("isolated rotor: a slip ground needs a ground (a height > 0 m)");
   if (c.climb > 0 && c.ground_height > 0)
     throw lbm::ConfigError("isolated rotor: a climb over a ground plane has no steady state; give either a climb rate or a ground");
   LrmDomain d(cfg);
@@ -32,6 +33,7 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
     RigidMotion m;
     m.velocity = rotor::Vec3(-c.speed, 0, 0);  // the ground passes under the rotor at the flight speed
     ground->set_motion(m);
+    ground->set_slip(c.slip_ground);
     d.add_wall(ground);
     // first wall cell below the hub: cell centres k with (k - centre) dx > height
     const double centre = 0.5 * (d.cells_per_edge() - 1);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <vector>
 
@@ -60,7 +61,6 @@ std::vector<double> forward_ratios_at_15_metres_per_second(lrm::LrmConfig base) 
   }
   return ratio;
 }
-}  // namespace
 
 TEST(Ground, StreamOverGroundMovingWithItStaysUniformWhileTheGroundMoves) {
   // Forward flight over the ground without a rotor: the ground passes at the stream's speed, so the
@@ -91,6 +91,87 @@ TEST(Ground, StreamOverGroundMovingWithItStaysUniformWhileTheGroundMoves) {
   EXPECT_LT(worst_deviation(d, stream), 0.005 * stream.norm());  // the refilled layers
   d.step(100);
   EXPECT_LT(worst_deviation(d, stream), 0.005 * stream.norm());
+}
+
+// The mean velocity along x (m/s) in the first fluid layer above a level ground, over the middle half
+// of the domain in x and y (away from the faces' corners).
+double speed_above_ground(lrm::LrmDomain& d) {
+  const lbm::Lattice& lat = d.solver().lattice();
+  const lbm::Fields f = d.solver().fields();
+  const int n = d.cells_per_edge();
+  const auto wall = [&](int i, int j, int k) { return lbm::is_wall(lat.type(i, j, k)); };
+  int k = n - 1;
+  while (k > 0 && wall(n / 2, n / 2, k - 1)) --k;  // k - 1: the first fluid layer above the ground at the centre
+  double sum = 0;
+  int count = 0;
+  for (int j = n / 4; j < 3 * n / 4; ++j)
+    for (int i = n / 4; i < 3 * n / 4; ++i) {
+      EXPECT_FALSE(wall(i, j, k - 1));
+      EXPECT_TRUE(wall(i, j, k));
+      sum += f.u[3 * lat.index(i, j, k - 1)];
+      ++count;
+    }
+  return sum / count * d.units().dx() / d.units().dt();
+}
+}  // namespace
+
+TEST(Ground, ASlipGroundLeavesTheStreamAlongItUndisturbed) {
+  // A stream along a ground at rest relative to the domain (a wind tunnel's floor). A free-slip wall
+  // reflects specularly and takes no momentum along itself, so the stream stays uniform next to it, as
+  // over the inviscid ground of the image models (Cheeseman & Bennett); a no-slip wall slows the
+  // layer above it (a boundary layer grows from the inflow face).
+  const Vec3 stream(-5.0, 0.0, 0.0);
+  const auto run = [&](bool slip) {
+    lrm::LrmDomain d(quick_config());
+    d.set_stream(stream);
+    auto ground = std::make_shared<lrm::GroundPlane>(6.0);
+    ground->set_slip(slip);
+    d.add_wall(ground);
+    d.restart_flow();
+    EXPECT_GT(d.wall_cells(), 0u);
+    d.step(300);
+    return std::make_pair(speed_above_ground(d), worst_deviation(d, stream));
+  };
+  const auto [slip_speed, slip_worst] = run(true);
+  const auto [no_slip_speed, no_slip_worst] = run(false);
+  EXPECT_LT(slip_worst, 0.005 * stream.norm());
+  EXPECT_NEAR(slip_speed, stream.x(), 0.005 * stream.norm());
+  EXPECT_GT(no_slip_speed, stream.x() + 0.05 * stream.norm());  // slower than the stream by more than 5 %
+  std::printf("layer above the ground: slip %.4f m/s, no slip %.4f m/s (stream %.1f); worst deviation slip %.2e, no slip %.2e m/s\n",
+              slip_speed, no_slip_speed, stream.x(), slip_worst, no_slip_worst);
+}
+
+TEST(Ground, ASlipGroundMaySlideAlongItselfOnly) {
+  // Forward flight over a slip ground: the ground passes under the rotor along itself, which specular
+  // reflection leaves alone. Moving across itself (a sinking rotorcraft) or turning, it would need the
+  // normal velocity a slip wall does not impose: refused, and the domain keeps its walls.
+  lrm::LrmDomain d(quick_config());
+  auto ground = std::make_shared<lrm::GroundPlane>(6.0);
+  ground->set_slip(true);
+  lrm::RigidMotion m;
+  m.velocity = Vec3(-20.0, 3.0, 0.0);
+  ground->set_motion(m);
+  d.add_wall(ground);
+  const std::size_t cells = d.wall_cells();
+  EXPECT_GT(cells, 0u);
+  EXPECT_TRUE(d.solver().lattice().wall_motions().empty());  // built at rest: no moving-wall slot
+  m.velocity = Vec3(-20.0, 0.0, 0.5);
+  ground->set_motion(m);
+  EXPECT_THROW(d.update_wall_motions(), lbm::ConfigError);
+  m.velocity = Vec3::Zero();
+  m.omega = Vec3(0.0, 0.1, 0.0);
+  ground->set_motion(m);
+  EXPECT_THROW(d.update_walls(), lbm::ConfigError);
+  EXPECT_EQ(d.wall_cells(), cells);
+  lrm::LrmDomain e(quick_config());
+  auto kept_clear = std::make_shared<lrm::GroundPlane>(6.0);
+  kept_clear->set_slip(true);
+  kept_clear->set_clear_of_faces(true);  // the held air inside would not slide with it
+  EXPECT_THROW(e.add_wall(kept_clear), lbm::ConfigError);
+  EXPECT_EQ(e.wall_cells(), 0u);
+  lrm::IsolatedRotorCase c;
+  c.slip_ground = true;  // without a ground
+  EXPECT_THROW(lrm::run_isolated_rotor(quick_config(), c), lbm::ConfigError);
 }
 
 TEST(Ground, BadSetUpsAreRefusedBeforeAnyStep) {

@@ -153,7 +153,8 @@ class LrmDomain {
   void restart_flow();
   // Solid bodies (walls.hpp): the ground, a ship deck, the fuselage. Adding one, or update_walls()
   // after one moved, re-voxelises the domain: cells whose centre lies inside become no-slip walls
-  // (halfway bounce-back), moving with the body (Ladd's moving-wall term). The solid continues
+  // (halfway bounce-back), moving with the body (Ladd's moving-wall term), or slip walls for a body
+  // that asks for them (WallSurface::slip: a level ground sliding along itself). The solid continues
   // through the outer layers to the faces, except for bodies that are kept clear of the faces
   // (WallSurface::clear_of_faces: the ship and the sea, thesis 6.4): in their two outermost layers
   // the cells inside such a body (the face cells excepted) are held cells (lbm::Lattice::set_held),
@@ -266,6 +267,9 @@ class LrmDomain {
   int face_layer(std::size_t cell) const;  // 0 on a face, 1 next to it, ...
   void push_wall_motions();
   lbm::WallMotion lattice_motion(const WallSurface& wall) const;
+  // Whether the body is built with moving-wall bounce-back (a no-slip body moving relative to the
+  // domain); a slip wall is built at rest, and is refused here if it moves across itself.
+  bool builds_as_moving_wall(const WallSurface& wall) const;
 };
 
 }  // namespace ship_lrm::lrm

@@ -21,6 +21,9 @@ struct IsolatedRotorCase {
   double average = 2.0;       // s averaged
   double rotor_speed = 44.4;  // rad/s, only to non-dimensionalise the Pitt-Peters reference
   double ground_height = 0;   // m from the hub down to a ground plane moving at the stream; 0: none
+  // the ground as a free-slip wall (WallSurface::slip) instead of a no-slip one: the inviscid wall of
+  // the image models (Cheeseman & Bennett), whose tangential motion then does not matter
+  bool slip_ground = false;
   bool fuselage = false;      // a Bo 105-like fuselage (walls.hpp) below the disk
   bool centre_plane = false;  // also average the x-z plane through the hub (IsolatedRotorResult::centre_plane)
   // called with the fraction of the case's LBM steps done, about every 0.05 s simulated (a progress line)

@@ -35,6 +35,12 @@ class WallSurface {
   // otherwise turns open-boundary cells into walls and back, which disturbs the flow (known defect,
   // test_ship_walls.cpp) and made the approach diverge where the hull entered the domain.
   virtual bool clear_of_faces() const { return false; }
+  // Free slip instead of no slip: the cells inside become slip walls (lbm::CellType::SlipWall), which
+  // reflect specularly where they form a plane and bounce back at edges and corners. A slip wall has no
+  // tangential velocity to impose, so the body may only slide along itself: motion() must not move it
+  // across its surface (LrmDomain refuses it otherwise). Meant for a level ground at full-scale
+  // Reynolds numbers, whose boundary layer the LRM's cells cannot resolve.
+  virtual bool slip() const { return false; }
 };
 
 // Flat ground (or sea, or a deck larger than the domain): the solid half-space more than `height`
@@ -52,12 +58,16 @@ class GroundPlane final : public WallSurface {
   double height() const { return height_; }
   bool clear_of_faces() const override { return clear_of_faces_; }
   void set_clear_of_faces(bool on) { clear_of_faces_ = on; }
+  bool slip() const override { return slip_; }
+  void set_slip(bool on) { slip_ = on; }
+  const Vec3& down() const { return down_; }
 
  private:
   double height_;
   Vec3 down_;
   RigidMotion motion_;
   bool clear_of_faces_ = false;
+  bool slip_ = false;
 };
 
 // A Bo 105-like fuselage fixed to the domain: an ellipsoidal cabin below the hub and a tail boom
