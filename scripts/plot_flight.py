@@ -39,6 +39,7 @@ def read(path):
     if not rows:
         sys.exit(f"plot_flight.py: {path} has no data rows")
     cols = {k: [] for k in rows[0]}
+    cols["_text"] = {k: [r[k] for r in rows] for k in rows[0]}  # the raw text (labels such as the faces)
     for r in rows:
         for k, v in r.items():
             if k is None:  # more fields than the header names
@@ -164,6 +165,8 @@ def plot_sweep_free_wake(data, out, lrm):
 
 def plot_sweep_ground(data, out):
     label = f"LRM N = {int(data['N'][0])}, a = {data['reach'][0]:g}"
+    if "slip-ground" in data["_text"].get("faces", [""])[0]:
+        label += ", slip ground"
     hover = all(v == 0 for v in data["speed_m_s"])
     if hover:
         fig, ax = plt.subplots(figsize=(7, 5))
