@@ -81,13 +81,17 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
       "Isolated rotor above a ground plane: v_mean / v_mean(out of ground effect) against Cheeseman-Bennett and Hayden (thesis 8.2.3)");
   struct Opts : IsolatedRotorOptions {
     std::string mode = "hover", heights, speeds = "0,3,6,9,12,15";
-    bool fuselage = false, slip_ground = false;
+    std::string ground_wall;  // slip or no-slip; empty: the mode's default
+    bool fuselage = false;
   };
   auto o = std::make_shared<Opts>();
   ground->add_flag("--fuselage", o->fuselage, "add the Bo 105-like fuselage (walls.hpp) below the disk");
-  ground->add_flag("--slip-ground", o->slip_ground,
-                   "the ground as a free-slip wall (specular reflection) instead of a no-slip one: the inviscid ground of the image "
-                   "models, for the wall jet the cells cannot resolve (named in the CSV's faces column)");
+  ground
+      ->add_option("--ground", o->ground_wall,
+                   "the ground's wall: slip (specular reflection, the inviscid ground of the image models; the hover default: the "
+                   "no-slip wall brakes the wall jet the cells cannot resolve) or no-slip (moving-wall bounce-back; the forward "
+                   "default); a slip ground is named in the CSV's faces column")
+      ->check(CLI::IsMember({"slip", "no-slip"}));
   ground
       ->add_option("--mode", o->mode,
                    "hover (heights swept; there --faces defaults to ambient) or forward (speeds swept at each height; there "
@@ -115,6 +119,13 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
       std::cout << "hover in ground effect: faces ambient (entraining pressure faces; the thesis' faces hold the wall jet in: "
                    "--faces thesis)\n";
     }
+    if (o->ground_wall.empty()) {
+      o->ground_wall = hover ? "slip" : "no-slip";
+      if (hover)
+        std::cout << "hover in ground effect: slip ground (the no-slip wall brakes the wall jet the cells cannot resolve and puts "
+                     "v_IGE / v_OGE above 1 from z/R = 1.25: --ground no-slip)\n";
+    }
+    const bool slip_ground = o->ground_wall == "slip";
     if (!hover && ground->get_option("--lattice-velocity")->count() == 0) {
       o->lattice_velocity = lrm::kForwardGroundLatticeVelocity;
       std::cout << "forward flight in ground effect: lattice velocity " << o->lattice_velocity
@@ -136,7 +147,7 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
       lrm::IsolatedRotorCase c = o->rotor_case(v);
       c.ground_height = z_over_R * cfg.radius;  // 0: out of ground effect
       c.fuselage = o->fuselage;
-      c.slip_ground = o->slip_ground && z_over_R > 0;
+      c.slip_ground = slip_ground && z_over_R > 0;
       return c;
     };
     for (double v : speeds) {  // every set-up checked before any long run
@@ -174,7 +185,7 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
         csv << std::setprecision(6) << o->mode << "," << v << "," << h << "," << r.ground_effective_height / cfg.radius << ","
             << r.induced_mean << "," << oge.induced_mean << "," << ratio << "," << cb << ",";
         if (hover) csv << lrm::hayden_ratio(h);
-        csv << "," << vi << "," << o->face.label() << (o->slip_ground ? ";slip-ground" : "") << "," << cfg.nodes << "," << cfg.reach << ","
+        csv << "," << vi << "," << o->face.label() << (slip_ground ? ";slip-ground" : "") << "," << cfg.nodes << "," << cfg.reach << ","
             << r.steps << "," << r.wall_seconds << "," << r.induced_std << "," << r.induced_half_difference << "," << oge.induced_std << ","
             << oge.induced_half_difference << "," << uncertainty << "\n";
         csv.flush();

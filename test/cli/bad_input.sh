@@ -39,6 +39,7 @@ expect "--climb: Value -1 not in range" sweep inflow --climb -1 --speeds 0 --N 1
 expect "--climb: 'nan' is not a finite number" sweep free-wake --climb nan --speeds 0 --out "$dir/f"
 expect "--smagorinsky: Value -0.1 not in range" sweep inflow --smagorinsky -0.1 --speeds 10 --N 16 --out "$dir/d"
 expect "--smagorinsky: 'nan' is not a finite number" sweep ground --smagorinsky nan --N 16 --out "$dir/d"
+expect "--ground: free not in {slip,no-slip}" sweep ground --ground free --N 16 --out "$dir/d"
 expect "--smagorinsky: applies to the LRM only" trim --smagorinsky 0.1 --speeds 10 --out "$dir/c"
 printf 'N,reach,speed_m_s,lrm_mean_m_s,momentum_theory_m_s,climb_m_s\n64,1.25,0,7.18,7.19,11.62\n' > "$dir/climb.csv"
 expect "was swept at a climb of 11.62 m/s" sweep free-wake --speeds 0 --lrm "$dir/climb.csv" --out "$dir/f"
