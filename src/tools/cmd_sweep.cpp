@@ -81,17 +81,17 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
       "Isolated rotor above a ground plane: v_mean / v_mean(out of ground effect) against Cheeseman-Bennett and Hayden (thesis 8.2.3)");
   struct Opts : IsolatedRotorOptions {
     std::string mode = "hover", heights, speeds = "0,3,6,9,12,15";
-    std::string ground_wall;  // slip or no-slip; empty: the mode's default
+    std::string ground_wall = "no-slip";
     bool fuselage = false;
   };
   auto o = std::make_shared<Opts>();
   ground->add_flag("--fuselage", o->fuselage, "add the Bo 105-like fuselage (walls.hpp) below the disk");
   ground
       ->add_option("--ground", o->ground_wall,
-                   "the ground's wall: slip (specular reflection, the inviscid ground of the image models; the hover default: the "
-                   "no-slip wall brakes the wall jet the cells cannot resolve) or no-slip (moving-wall bounce-back; the forward "
-                   "default); a slip ground is named in the CSV's faces column")
-      ->check(CLI::IsMember({"slip", "no-slip"}));
+                   "the ground's wall: no-slip (moving-wall bounce-back) or slip (specular reflection, the inviscid ground of the "
+                   "image models, for the wall jet the cells cannot resolve); a slip ground is named in the CSV's faces column")
+      ->check(CLI::IsMember({"slip", "no-slip"}))
+      ->capture_default_str();
   ground
       ->add_option("--mode", o->mode,
                    "hover (heights swept; there --faces defaults to ambient) or forward (speeds swept at each height; there "
@@ -118,12 +118,6 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
       o->face.faces = "ambient";
       std::cout << "hover in ground effect: faces ambient (entraining pressure faces; the thesis' faces hold the wall jet in: "
                    "--faces thesis)\n";
-    }
-    if (o->ground_wall.empty()) {
-      o->ground_wall = hover ? "slip" : "no-slip";
-      if (hover)
-        std::cout << "hover in ground effect: slip ground (the no-slip wall brakes the wall jet the cells cannot resolve and puts "
-                     "v_IGE / v_OGE above 1 from z/R = 1.25: --ground no-slip)\n";
     }
     const bool slip_ground = o->ground_wall == "slip";
     if (!hover && ground->get_option("--lattice-velocity")->count() == 0) {
