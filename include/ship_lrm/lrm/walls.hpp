@@ -60,7 +60,6 @@ class GroundPlane final : public WallSurface {
   void set_clear_of_faces(bool on) { clear_of_faces_ = on; }
   bool slip() const override { return slip_; }
   void set_slip(bool on) { slip_ = on; }
-  const Vec3& down() const { return down_; }
 
  private:
   double height_;
