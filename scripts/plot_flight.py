@@ -4,7 +4,7 @@
 usage: plot_flight.py trim TRIM.csv OUT.png [--reference MEASURED.csv]
        plot_flight.py doublet DOUBLET.csv OUT.png
        plot_flight.py sweep_inflow INFLOW_SWEEP.csv OUT.png
-       plot_flight.py sweep_ground GROUND_SWEEP.csv OUT.png
+       plot_flight.py sweep_ground GROUND_SWEEP.csv OUT.png [--also MORE_HOVER_SWEEPS.csv ...]
        plot_flight.py sweep_free_wake FREE_WAKE_SWEEP.csv OUT.png [--reference INFLOW_SWEEP.csv]
        plot_flight.py plane PLANE.csv OUT.png
 
@@ -163,17 +163,24 @@ def plot_sweep_free_wake(data, out, lrm):
     finish_speed_panels(fig, axes, f"Uniformly loaded actuator disk, zero incidence{climb_note(data)}; v_h = {vh:.2f} m/s", out)
 
 
-def plot_sweep_ground(data, out):
+def ground_label(data):
     label = f"LRM N = {int(data['N'][0])}, a = {data['reach'][0]:g}"
     if "slip-ground" in data["_text"].get("faces", [""])[0]:
         label += ", slip ground"
+    return label
+
+
+def plot_sweep_ground(data, out, more=()):
+    label = ground_label(data)
     hover = all(v == 0 for v in data["speed_m_s"])
+    if more and not (hover and all(all(v == 0 for v in d["speed_m_s"]) for d in more)):
+        sys.exit("plot_flight.py: --also takes hover sweeps only, beside a hover sweep")
     if hover:
         fig, ax = plt.subplots(figsize=(7, 5))
         z = data["z_over_R"]
         # half-window differences of the two means (older CSVs have none)
-        err = data.get("ratio_uncertainty")
-        ax.errorbar(z, data["ratio"], yerr=err, fmt="o-", capsize=3, label=label)
+        for d in (data, *more):
+            ax.errorbar(d["z_over_R"], d["ratio"], yerr=d.get("ratio_uncertainty"), fmt="o-", capsize=3, label=ground_label(d))
         ax.plot(z, data["cheeseman_bennett"], "--", color="k", label="Cheeseman & Bennett 1955")
         ax.plot(z, data["hayden"], ":", color="k", label="Hayden 1976 (power ratio)")
         ax.axhline(1.0, color="grey", lw=0.8)
@@ -263,6 +270,7 @@ def main():
     ap.add_argument("csv")
     ap.add_argument("png")
     ap.add_argument("--reference")
+    ap.add_argument("--also", nargs="+", default=[], help="sweep_ground: more hover sweeps on the same axes")
     a = ap.parse_args()
     if a.kind == "plane":
         return plot_plane(a.csv, a.png)
@@ -272,7 +280,7 @@ def main():
     elif a.kind == "doublet":
         plot_doublet(data, a.png)
     elif a.kind == "sweep_ground":
-        plot_sweep_ground(data, a.png)
+        plot_sweep_ground(data, a.png, [read(c) for c in a.also])
     elif a.kind == "sweep_free_wake":
         plot_sweep_free_wake(data, a.png, read(a.reference) if a.reference else None)
     else:

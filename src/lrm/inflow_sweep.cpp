@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <sstream>
 #include <vector>
 
 #include "ship_lrm/rotor/momentum_theory.hpp"
@@ -11,24 +13,33 @@
 
 namespace ship_lrm::lrm {
 
-IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotorCase& c) {
+namespace {
+
+// The case's domain with its stream and walls, the flow not yet started: what run_isolated_rotor
+// steps and check_isolated_rotor only builds. lbm::ConfigError for a set-up that cannot run;
+// ground_effective_height: where the bounce-back wall lies (m below the hub; 0 without a ground).
+std::unique_ptr<LrmDomain> case_domain(const LrmConfig& cfg, const IsolatedRotorCase& c, double& ground_effective_height) {
   if (!(c.settle >= 0) || !(c.average > 0)) throw lbm::ConfigError("isolated rotor: needs settle >= 0 s and average > 0 s");
   if (!(c.thrust > 0)) throw lbm::ConfigError("isolated rotor: needs a thrust > 0 N");
-  IsolatedRotorResult r;
   if (!(c.ground_height >= 0)) throw lbm::ConfigError("isolated rotor: the ground height must be >= 0 m (0: no ground)");
   if (!(c.climb >= 0) || !std::isfinite(c.climb))
     throw lbm::ConfigError("isolated rotor: the climb rate must be a finite number >= 0 m/s (descents are not supported)");
   if (c.slip_ground && !(c.ground_height > 0)) throw lbm::ConfigError("isolated rotor: a slip ground needs a ground (a height > 0 m)");
   if (c.climb > 0 && c.ground_height > 0)
     throw lbm::ConfigError("isolated rotor: a climb over a ground plane has no steady state; give either a climb rate or a ground");
-  LrmDomain d(cfg);
+  auto domain = std::make_unique<LrmDomain>(cfg);
+  LrmDomain& d = *domain;
   d.set_stream(rotor::Vec3(-c.speed, 0, c.climb));
   if (c.fuselage) d.add_wall(std::make_shared<Fuselage>());
+  ground_effective_height = 0;
   if (c.ground_height > 0) {
     const double half = 0.5 * (d.cells_per_edge() - 1) * d.units().dx();
-    if (c.ground_height > half - 3 * d.units().dx())
-      throw lbm::ConfigError("isolated rotor: a ground " + std::to_string(c.ground_height) + " m below the hub lies outside the domain (" +
-                             std::to_string(half) + " m to the bottom face); raise the reach a or lower the height");
+    if (c.ground_height > half - 3 * d.units().dx()) {
+      std::ostringstream what;
+      what << "isolated rotor: a ground " << c.ground_height << " m below the hub lies outside the domain (" << half
+           << " m to the bottom face, the ground at least three cells above it); raise the reach a or lower the height";
+      throw lbm::ConfigError(what.str());
+    }
     auto ground = std::make_shared<GroundPlane>(c.ground_height);
     RigidMotion m;
     m.velocity = rotor::Vec3(-c.speed, 0, 0);  // the ground passes under the rotor at the flight speed
@@ -38,9 +49,23 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
     // first wall cell below the hub: cell centres k with (k - centre) dx > height
     const double centre = 0.5 * (d.cells_per_edge() - 1);
     const double k0 = std::floor(centre + c.ground_height / d.units().dx()) + 1.0;
-    r.ground_effective_height = (k0 - 0.5 - centre) * d.units().dx();
-    if (cfg.rotor_far_field) d.set_far_field_ground(r.ground_effective_height);
+    ground_effective_height = (k0 - 0.5 - centre) * d.units().dx();
+    if (cfg.rotor_far_field) d.set_far_field_ground(ground_effective_height);
   }
+  return domain;
+}
+
+}  // namespace
+
+void check_isolated_rotor(const LrmConfig& cfg, const IsolatedRotorCase& c) {
+  double ground_effective_height;
+  case_domain(cfg, c, ground_effective_height);
+}
+
+IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotorCase& c) {
+  IsolatedRotorResult r;
+  const std::unique_ptr<LrmDomain> domain = case_domain(cfg, c, r.ground_effective_height);
+  LrmDomain& d = *domain;
   d.restart_flow();
   rotor::RotorForceHarmonics h;
   h.cos[0] = rotor::Vec3(0, 0, -c.thrust);

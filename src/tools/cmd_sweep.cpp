@@ -18,6 +18,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
+constexpr double kLowestHeight = 0.25;  // z/R, sweep ground
+
 // Options both isolated-rotor sweeps share: the domain, the rotor's load and averaging, the output.
 struct IsolatedRotorOptions {
   int nodes = 64;
@@ -100,8 +102,8 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
       ->check(CLI::IsMember({"hover", "forward"}))
       ->capture_default_str();
   ground->add_option("--heights", o->heights,
-                     "hub height over ground z/R: a comma list or start:step:stop (default hover 0.5,0.6,0.7,0.8,1,1.25,1.5,2; "
-                     "forward 0.5,0.6,0.8,1)");
+                     "hub height over ground z/R, at least 0.25: a comma list or start:step:stop (default hover "
+                     "0.5,0.6,0.7,0.8,1,1.25,1.5,2; forward 0.5,0.6,0.8,1)");
   ground->add_option("--speeds", o->speeds, "forward mode: speeds in m/s")->capture_default_str();
   o->add_to(*ground, "ground_sweep.csv, .png");
   return [o, ground]() -> int {
@@ -112,8 +114,15 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
     const auto heights = parse_number_list(o->heights.empty() ? (hover ? "0.5,0.6,0.7,0.8,1,1.25,1.5,2" : "0.5,0.6,0.8,1") : o->heights,
                                            "--heights", 0.0, 1000.0, "R");
     const auto speeds = hover ? std::vector<double>{0.0} : parse_speeds(o->speeds);
+    // Below z/R = 1/4 Cheeseman-Bennett's 1 - (R / 4z)^2 is negative, and the disk all but sits on the
+    // ground (a Bo 105 on its skids has its hub at about 0.6 R): refused rather than swept into nonsense.
     for (double h : heights)
-      if (!(h > 0)) throw lbm::ConfigError("--heights: z/R must be > 0, got " + std::to_string(h));
+      if (!(h >= kLowestHeight)) {
+        std::ostringstream what;
+        what << "--heights: z/R must be at least " << kLowestHeight
+             << " (below it Cheeseman-Bennett's 1 - (R/4z)^2 is negative and the disk all but sits on the ground), got " << h;
+        throw lbm::ConfigError(what.str());
+      }
     if (hover && ground->get_option("--faces")->count() == 0) {
       o->face.faces = "ambient";
       std::cout << "hover in ground effect: faces ambient (entraining pressure faces; the thesis' faces hold the wall jet in: "
@@ -136,7 +145,6 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
         add_plane_outputs(outputs, plane_stem(v, 0));
         for (double h : heights) add_plane_outputs(outputs, plane_stem(v, h));
       }
-    prepare_output(dir, outputs, o->overwrite);
     const auto case_for = [&](double v, double z_over_R) {
       lrm::IsolatedRotorCase c = o->rotor_case(v);
       c.ground_height = z_over_R * cfg.radius;  // 0: out of ground effect
@@ -144,15 +152,22 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
       c.slip_ground = slip_ground && z_over_R > 0;
       return c;
     };
-    for (double v : speeds) {  // every set-up checked before any long run
-      lrm::LrmDomain probe(lrm::config_for_stream(cfg, v));
-      probe.set_stream(rotor::Vec3(-v, 0, 0));
-      const double half = 0.5 * (probe.cells_per_edge() - 1) * probe.units().dx();
-      for (double h : heights)
-        if (h * cfg.radius > half - 3 * probe.units().dx())
-          throw lbm::ConfigError("--heights: z/R = " + std::to_string(h) +
-                                 " puts the ground outside the domain at a = " + std::to_string(cfg.reach) + "; raise --reach");
+    // Every case's set-up is checked before any long run and before any file is made (a ground on the
+    // disk's cells was found only after the run out of ground effect, and left a CSV that blocked the rerun).
+    for (double v : speeds) {
+      const lrm::LrmConfig run_cfg = lrm::config_for_stream(cfg, v);
+      lrm::check_isolated_rotor(run_cfg, case_for(v, 0));
+      for (double h : heights) {
+        try {
+          lrm::check_isolated_rotor(run_cfg, case_for(v, h));
+        } catch (const lbm::ConfigError& e) {
+          std::ostringstream what;
+          what << "--heights: z/R = " << h << " at N = " << cfg.nodes << ", a = " << cfg.reach << ": " << e.what();
+          throw lbm::ConfigError(what.str());
+        }
+      }
     }
+    prepare_output(dir, outputs, o->overwrite);
     std::ofstream csv(dir / "ground_sweep.csv");
     csv << "mode,speed_m_s,z_over_R,z_effective_over_R,lrm_mean_m_s,lrm_mean_oge_m_s,ratio,cheeseman_bennett,hayden,"
            "momentum_theory_oge_m_s,faces,N,reach,steps,wall_s,lrm_std_m_s,lrm_half_difference_m_s,oge_std_m_s,oge_half_difference_m_s,"
@@ -224,17 +239,14 @@ std::function<int()> add_sweep_command(CLI::App& app) {
     std::vector<std::string> outputs{"inflow_sweep.csv", "inflow_sweep.png"};
     if (o->planes)
       for (double v : speeds) add_plane_outputs(outputs, "plane_V" + tag(v));
-    prepare_output(dir, outputs, o->overwrite);
     const auto case_config = [&](double v) { return lrm::config_for_stream(cfg, std::hypot(v, o->climb)); };
     const auto rotor_case = [&](double v) {
       lrm::IsolatedRotorCase c = o->rotor_case(v);
       c.climb = o->climb;
       return c;
     };
-    for (double v : speeds) {  // check every set-up before any long run
-      lrm::LrmDomain probe(case_config(v));
-      probe.set_stream(rotor::Vec3(-v, 0, o->climb));
-    }
+    for (double v : speeds) lrm::check_isolated_rotor(case_config(v), rotor_case(v));  // before any long run or file
+    prepare_output(dir, outputs, o->overwrite);
     std::ofstream csv(dir / "inflow_sweep.csv");
     csv << "speed_m_s,lrm_mean_m_s,lrm_cosine_m_s,lrm_sine_m_s,lrm_inplane_x_m_s,pitt_peters_mean_m_s,pitt_peters_cosine_m_s,"
            "momentum_theory_m_s,hover_momentum_theory_m_s,mean_over_pitt_peters,N,reach,cells_per_edge,time_step_s,steps,wall_s,"

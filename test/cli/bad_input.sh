@@ -40,6 +40,11 @@ expect "--climb: 'nan' is not a finite number" sweep free-wake --climb nan --spe
 expect "--smagorinsky: Value -0.1 not in range" sweep inflow --smagorinsky -0.1 --speeds 10 --N 16 --out "$dir/d"
 expect "--smagorinsky: 'nan' is not a finite number" sweep ground --smagorinsky nan --N 16 --out "$dir/d"
 expect "--ground: free not in {slip,no-slip}" sweep ground --ground free --N 16 --out "$dir/d"
+# a ground under the disk's cells or below the domain: refused before the run out of ground effect
+# (at z/R = 0.01 and N = 64, a = 2, the disk sat on the ground and the sweep gave a ratio of 0.024; a
+# ground on the disk's cells was found only after that run, and left a CSV that blocked the rerun)
+expect "--heights: z/R must be at least 0.25" sweep ground --heights 0.5,0.01 --N 64 --reach 2 --out "$dir/d"
+expect "--heights: z/R = 100 at N = 16, a = 1.25: isolated rotor: a ground 492 m below the hub lies outside the domain" sweep ground --heights 100 --N 16 --out "$dir/d"
 expect "--smagorinsky: applies to the LRM only" trim --smagorinsky 0.1 --speeds 10 --out "$dir/c"
 printf 'N,reach,speed_m_s,lrm_mean_m_s,momentum_theory_m_s,climb_m_s\n64,1.25,0,7.18,7.19,11.62\n' > "$dir/climb.csv"
 expect "was swept at a climb of 11.62 m/s" sweep free-wake --speeds 0 --lrm "$dir/climb.csv" --out "$dir/f"

@@ -180,6 +180,11 @@ TEST(Ground, BadSetUpsAreRefusedBeforeAnyStep) {
   lrm::IsolatedRotorCase c;
   c.ground_height = 40.0;  // below the bottom face at a = 1.25 (12.3 m)
   EXPECT_THROW(lrm::run_isolated_rotor(quick_config(), c), lbm::ConfigError);
+  EXPECT_THROW(lrm::check_isolated_rotor(quick_config(), c), lbm::ConfigError);  // what the sweeps ask first
+  c.ground_height = 0.01;                                                        // on the disk's cells
+  EXPECT_THROW(lrm::check_isolated_rotor(quick_config(), c), lrm::WallOnRotorDisk);
+  c.ground_height = 0.5 * 4.92;
+  EXPECT_NO_THROW(lrm::check_isolated_rotor(quick_config(), c));
   EXPECT_THROW(lrm::GroundPlane(1.0, Vec3::Zero()), std::invalid_argument);
 }
 
