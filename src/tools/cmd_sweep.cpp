@@ -115,7 +115,8 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
                                            "--heights", 0.0, 1000.0, "R");
     const auto speeds = hover ? std::vector<double>{0.0} : parse_speeds(o->speeds);
     // Below z/R = 1/4 Cheeseman-Bennett's 1 - (R / 4z)^2 is negative, and the disk all but sits on the
-    // ground (a Bo 105 on its skids has its hub at about 0.6 R): refused rather than swept into nonsense.
+    // ground (a Bo 105 on its skids has its hub at 0.55 R: 1.49 m above the cg, the skids 1.2 m below
+    // it): refused rather than swept into nonsense.
     for (double h : heights)
       if (!(h >= kLowestHeight)) {
         std::ostringstream what;
