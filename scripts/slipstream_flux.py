@@ -136,18 +136,14 @@ def main():
     rows = profile(xs, zs, grid, radius, climb, v, radii)
     far_flux = 2 * (climb + v) / (climb + 2 * v)
     contraction = math.sqrt((climb + v) / (climb + 2 * v))
-    print(f"climb {climb:.3f} m/s, momentum theory v = {v:.4f} m/s; far wake (inviscid): induced flux "
-          f"{far_flux:.4f} A v, radius {contraction:.4f} R, axis 2 v")
     names = ["z_over_R", "axis_induced_over_v"] + [f"flux_r{rc:g}R_over_Av" for rc in radii] + ["r_half_over_R"]
-    print("  ".join(f"{n:>14s}" for n in names))
-    for r in rows:
-        print("  ".join(f"{x:14.4f}" for x in r))
+    # the files first, the table on stdout last: a reader that stops early (`| head`, `| grep -q`) must
+    # not cost the user the files
     if a.out:
         with open(a.out, "w") as f:
             f.write(",".join(names) + f",climb_m_s,momentum_theory_m_s,far_wake_flux_over_Av\n")
             for r in rows:
                 f.write(",".join(f"{x:.6g}" for x in r) + f",{climb:.6g},{v:.6g},{far_flux:.6g}\n")
-        print(f"wrote {a.out}")
     if a.png:
         import matplotlib
 
@@ -168,8 +164,22 @@ def main():
         ax.grid(alpha=0.3)
         fig.tight_layout()
         fig.savefig(a.png, dpi=110)
-        print(f"wrote {a.png}")
+    print(f"climb {climb:.3f} m/s, momentum theory v = {v:.4f} m/s; far wake (inviscid): induced flux "
+          f"{far_flux:.4f} A v, radius {contraction:.4f} R, axis 2 v")
+    print("  ".join(f"{n:>14s}" for n in names))
+    for r in rows:
+        print("  ".join(f"{x:14.4f}" for x in r))
+    for path in (a.out, a.png):
+        if path:
+            print(f"wrote {path}")
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+        sys.stdout.flush()
+    except BrokenPipeError:
+        # stdout's reader went away (`| head`); the files are written. Quiet, as the Python docs advise
+        # (signal module, "Note on SIGPIPE"): no traceback, stdout to devnull for the exit's flush.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        sys.exit(1)
