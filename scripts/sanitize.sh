@@ -8,8 +8,9 @@
 #   SANITIZER=thread: ThreadSanitizer on the tests that run threads of their own (the real-time LRM
 #     inflow, the inflow link, the wake table's read-ahead). Build folder build/tsan. OpenMP runs one
 #     thread there (libgomp is not instrumented, so its own barriers would be reported as races).
-# Usage: scripts/sanitize.sh [GTEST_FILTER]   (default: every test; the bluff-body validation is left
-# out under AddressSanitizer, it takes minutes there and runs nothing the other tests do not)
+# Usage: scripts/sanitize.sh [GTEST_FILTER]   (default: every test but the bluff-body validation under
+# AddressSanitizer, it takes minutes there and runs nothing the other tests do not; the threaded tests above
+# under ThreadSanitizer)
 # CUDA is off in these builds: the device code is checked by scripts/gpu_check.sh on a GPU.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"

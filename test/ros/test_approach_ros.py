@@ -33,7 +33,7 @@ FRAMES = ["world", "world_ned", "base_link", "base_link_frd", "main_rotor", "lrm
 class ApproachLaunch(unittest.TestCase):
     def test_topics_frames_and_loads_as_the_batch_tool(self):
         loads, seen = [], {}
-        # tf first, connected before the loads' subscription below lets the flight model start: the run is
+        # tf and the counted topics connected before the loads' subscription lets the flight model start: the run is
         # over in well under a second of wall clock, and a listener that connected after it would hold no
         # frames at all (simulated time then stands still, so tf's own timeouts would never end)
         buffer = tf2_ros.Buffer(cache_time=rospy.Duration(100))
