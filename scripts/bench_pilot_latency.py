@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Real-time benchmark of the ROS layer (issue 6, acceptance 5), run by launch/bench_realtime.launch:
+"""Real-time benchmark of the ROS layer (real-time target), run by launch/bench_realtime.launch:
 moves the stick (sensor_msgs/Joy on /joy, through the Scenario nodelet) in small collective steps at
 `rate` Hz while the approach runs paced to the wall clock, and measures for every input the time from
 its stamp to the arrival here of the first ship_lrm/RotorLoads that carries it (pilot_stamp): pilot

@@ -14,8 +14,8 @@
 #      WakeFaceFeed.* (the face feed on the device against the host's), and a short approach on each backend (identical CSVs);
 #      where .carry/pack/trace.tar.xz is packed, the LRM device tests again from the diagnostics build, which
 #      prints pass 1 of the open boundaries at one cell on both backends (lrm_trace.log);
-#   2. issue 4 acceptance 6: the coupled step at N = 64, a = 1.25 (goal t_clock / t_sim <= 0.05);
-#   3. issue 5 acceptance 5: serving the faces of that domain from the default table (goal <= 5 % of
+#   2. GPU target: the coupled step at N = 64, a = 1.25 (goal t_clock / t_sim <= 0.05);
+#   3. face-feed cost target: serving the faces of that domain from the default table (goal <= 5 % of
 #      its step), with the table made here on the GPU (also the precompute's MLUPS);
 #   4. with FULL=1 (or FULL unset and time to spare: FULL=auto, the default, runs it when steps 1 - 3
 #      took less than 4 minutes): every test binary in full, the LBM benchmarks, N = 128, the
@@ -94,10 +94,10 @@ step approach_cpu 180 "$bench" "${approach_args[@]}" --backend cpu --out "$wake_
 step approach_cuda 180 "$bench" "${approach_args[@]}" --backend cuda --out "$wake_dir/approach_cuda"
 step approach_identical 10 cmp "$wake_dir/approach_cpu/approach.csv" "$wake_dir/approach_cuda/approach.csv" || failed=1
 
-# 2. the coupled step at N = 64 (issue 4 acceptance 6)
+# 2. the coupled step at N = 64 (GPU target)
 step bench_lrm_64 240 "$bench" bench lrm --backend cuda --N 64 --reach 1.25 --seconds 5 --json
 
-# 3. the face feed from the default table (issue 5 acceptance 5), the table made here
+# 3. the face feed from the default table (face-feed cost target), the table made here
 step wake_default 300 "$bench" wake --preset default --backend cuda --no-plot --out "$wake_dir/default.h5"
 if [ -f "$wake_dir/default.h5" ]; then
   step bench_wake_cuda 180 "$bench" bench wake --table "$wake_dir/default.h5" --N 64 --steps 200 --backend cuda --json
@@ -121,7 +121,7 @@ if [ "$full" = 1 ]; then
   # the collision's stability in a disturbed stream on the device (the same table as the CPU's: the
   # backends are bit-identical; docs/benchmarks.md, "Stream stability of the collision")
   step stream_stability 300 "$bench" validate stream-stability --backend cuda --mach 0.15,0.225,0.3
-  # the recursive regularised collision and the characteristic inlet on the device (session 35)
+  # the recursive regularised collision and the characteristic inlet on the device (2026-12-04)
   step stream_stability_rr 300 "$bench" validate stream-stability --backend cuda --mach 0.3 --collision recursive
   step inlet_outlet 300 "$bench" validate stream-stability --backend cuda --faces inlet-outlet --characteristic-inlet \
     --mach 0.078,0.173 --steps 8000 --smagorinsky 0.025 --nu 2.39e-5

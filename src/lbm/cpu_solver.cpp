@@ -533,7 +533,7 @@ class CpuSolver final : public Solver {
   std::vector<std::uint8_t> segment_forced_;
   // The cells of the last listed-cell force call and the bulk segment of each (-1: none): the LRM
   // lists the same disk cells every step, and looking their segments up each time cost as much as
-  // evaluating the forces (session 39). Cleared where the segments change (mark_forced_segments).
+  // evaluating the forces (2026-12-04). Cleared where the segments change (mark_forced_segments).
   std::vector<std::uint32_t> listed_cells_;
   std::vector<std::int64_t> listed_segment_;
   // update_segment's group of cells, and the lanes its last cells are copied into: the AVX-512

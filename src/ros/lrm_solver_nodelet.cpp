@@ -9,7 +9,7 @@
 // The domain is built and every request served on the nodelet's own thread, from its own callback
 // queue: one thread (and one OpenMP team) for the LBM, and a request handed straight from the
 // publishing thread to it, not through the nodelet manager's dispatcher and worker threads
-// (docs/benchmarks.md, "ROS layer in real time", session 22).
+// (docs/benchmarks.md, "ROS layer in real time", 2026-12-02).
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <nodelet/nodelet.h>
 #include <pthread.h>

@@ -77,7 +77,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
                     "with --realtime: the LRM runs " + std::to_string(lrm::kPipelineDepth) +
                         " LBM intervals behind the flight model (a job is due that many LBM steps after its loads were posted) "
                         "instead of lock-step");
-  auto* wake_cmd = bench->add_subcommand("wake", "Serving an LRM domain's faces from a wake table, against the LBM step (issue 5)");
+  auto* wake_cmd = bench->add_subcommand("wake", "Serving an LRM domain's faces from a wake table, against the LBM step");
   struct WakeOpts {
     std::string table, backend = "cpu";
     int nodes = 64, steps = 20;

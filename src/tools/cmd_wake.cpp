@@ -1,4 +1,4 @@
-// `ship_lrm wake`: the ship-wake precompute (issue 5), its presets, the ship mesh export, and the
+// `ship_lrm wake`: the ship-wake precompute, its presets, the ship mesh export, and the
 // centre-plane plots of thesis figs. 7.2, 7.3 and 7.6 (scripts/plot_wake.py).
 #include <atomic>
 #include <cmath>
@@ -83,7 +83,7 @@ std::function<int()> add_wake_command(CLI::App& app) {
     if (o.out.empty()) throw CLI::ValidationError("--out", "give the table file (FILE.h5)");
     o.domain.collision = lbm::parse_collision_model(*collision);
     // The flow over the superstructure reaches 1.11 times the wind; a faster lattice wind costs accuracy
-    // (compressibility) and, with BGK, stability (docs/design.md, "The noisy inlet"; benchmarks, session 35)
+    // (compressibility) and, with BGK, stability (docs/design.md, "The noisy inlet"; benchmarks, 2026-12-04)
     if (const double mach = 1.15 * o.domain.lattice_wind * std::sqrt(3.0); mach > 0.15)
       std::fprintf(stderr,
                    "ship_lrm: warning: --lattice-wind %g puts the flow over the ship at lattice Mach %.2f: the mean flow moves by about "

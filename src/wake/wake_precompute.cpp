@@ -27,7 +27,7 @@ std::string signature(const PrecomputeOptions& o, const ShipWakeDomain& d) {
     << " grid=" << d.nx() << "x" << d.ny() << "x" << d.nz() << " interval=" << o.frame_interval << " stats=" << o.stats_interval
     << " half=" << o.half_precision;
   if (o.domain.collision != lbm::CollisionModel::Bgk) s << " collision=" << lbm::to_string(o.domain.collision);
-  if (o.domain.characteristic_inlet) s << " inlet=characteristic";  // none: the reflecting inlet of the tables before session 35
+  if (o.domain.characteristic_inlet) s << " inlet=characteristic";  // none: the reflecting inlet of the tables before 2026-12-04
   return s.str();
 }
 

@@ -1,4 +1,4 @@
-// Issue 3 acceptance: hover (1), trim sweep (2), collective step (3), doublets (5), bad input (7).
+// Flight-model validation: hover (1), trim sweep (2), collective step (3), doublets (5), bad input (7).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -10,7 +10,7 @@
 using namespace ship_lrm::rotor;
 
 namespace {
-// The thesis' inflow test case (REFERENCE.md): T = 24525 N, R = 4.92 m, rho = 1.1934 kg/m^3.
+// The thesis' inflow test case (thesis table 6.4): T = 24525 N, R = 4.92 m, rho = 1.1934 kg/m^3.
 RotorDiskState disk(double thrust, double speed) {
   RotorDiskState s;
   s.radius = 4.92;

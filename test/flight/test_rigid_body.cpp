@@ -1,4 +1,4 @@
-// Acceptance 4 of issue 3: the rigid body conserves angular momentum and energy when torque-free, and
+// The rigid body conserves angular momentum and energy when torque-free, and
 // falls at exactly g with the aerodynamics off.
 #include <gtest/gtest.h>
 

@@ -51,7 +51,7 @@ TEST(EllipticIntegrals, TheArithmeticGeometricMeanGivesTheStandardLibrarysValues
 // The core round the filament: at the core radius c the ring is locally a line vortex with Scully's
 // core, gamma / (4 pi c); off the filament the field is the exact one, also right next to the axis,
 // where the radial component vanishes (a core added to the distances instead made it grow as 1 / rho
-// there: 169 m/s at an LRM face cell in session 31).
+// there: 169 m/s at an LRM face cell, 2026-12-03).
 TEST(VortexRing, TheCoreSmoothsOnlyTheFilament) {
   const double R = 2.0, G = 3.0, c = 1e-3 * R;
   const Vec3 at_core = vortex_ring_velocity(R, G, Vec3(R - c, 0, 0), c * c);

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Compiles pass 1 of the open boundaries for the device (pass1_ptx_probe.cu, the build's CUDA flags)
-# and fails if its PTX uses local memory. Session 38's CUDA/CPU difference came from a stack slot there
+# and fails if its PTX uses local memory. The CUDA/CPU difference of 2026-12-04 came from a stack slot there
 # that nvcc shared between the boundary state and other local arrays (docs/design.md, "The device's
 # stack slot"); kept in registers the state cannot be overwritten. Needs nvcc only, no GPU.
 # Usage: check_pass1_ptx.sh NVCC INCLUDE_DIR OUT_DIR [ARCH]

@@ -1,5 +1,5 @@
 // Open boundaries: velocity inlet / pressure outlet (Latt et al. 2008 FD reconstruction) and the
-// non-reflecting impedance outlet (thesis 6.1.3, eq. 6.15). Issue 2, tests 4 and 7.
+// non-reflecting impedance outlet (thesis 6.1.3, eq. 6.15). 
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -114,7 +114,7 @@ TEST(OpenBoundaries, ImpedanceOutletPassesSteadyFlow) {
 // A uniform stream enters through a velocity inlet into a box whose sides and top are slip walls and
 // whose floor is slip-wall cells (the ship-wake domain's sea), and leaves through an impedance
 // outlet: nothing in it is a source of shear, so it must stay uniform, at lattice velocity 0.1
-// (Mach 0.17), to 0.5 % (the bound of issue 4, acceptance 3, for the LRM's uniform stream). The inlet cells
+// (Mach 0.17), to 0.5 % (the uniform-stream bound for the LRM's uniform stream). The inlet cells
 // above the sea touch a complete slip plane (the sea goes on upstream of the inlet); counting the
 // links that leave through the inlet as leaving the plane, as before, made them bounce back there:
 // a no-slip corner that spoiled the stream (by 67 % here).

@@ -99,7 +99,7 @@ TEST(StreamStability, RecursiveRegularisedCollisionDampsWhatBgkGrowsAtMach03) {
 }
 
 // A stream through a velocity inlet and a pressure outlet (y, z periodic) at the wake's lattice viscosity
-// and Smagorinsky constant, Mach 0.173 (the wake's lattice wind before session 34): with the thesis'
+// and Smagorinsky constant, Mach 0.173 (the wake's lattice wind before 2026-12-04): with the thesis'
 // reflecting inlet a 1e-4 disturbance grows (x 900 in 8 000 steps in this 16^3 box, measured; either
 // collision), which is what made the wake's inlet noisy; the characteristic inlet lets it leave
 // (x 0.017). The periodic box at the same Mach number decays.
@@ -114,7 +114,7 @@ TEST(StreamStability, CharacteristicInletLetsTheDisturbanceLeave) {
 }
 
 // OPEN DEFECT, the goal for a fix: the LRM's velocity faces are still the thesis' reflecting inlets
-// (the characteristic inlet did not remove the forward-flight ground corner's mode, session 35, so the
+// (the characteristic inlet did not remove the forward-flight ground corner's mode, 2026-12-04, so the
 // LRM keeps them). In a 32^3 box at the wake's default Mach 0.078 the reflecting inlet grows a
 // disturbance x 4.2 in 8 000 steps (measured). Enable when the reflecting inlet is stable.
 TEST(StreamStability, DISABLED_AStreamThroughAVelocityInletAndPressureOutletStaysQuiet) {

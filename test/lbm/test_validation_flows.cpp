@@ -1,4 +1,4 @@
-// Validation of the LBM core against analytic solutions (issue 2, tests 1, 2, 3, 5, 6, 8).
+// Validation of the LBM core against analytic solutions.
 #include <gtest/gtest.h>
 
 #include <cmath>

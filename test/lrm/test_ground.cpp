@@ -1,4 +1,4 @@
-// Walls in the LRM domain (issue 4): a ground plane through the signed-distance interface, moving
+// Walls in the LRM domain: a ground plane through the signed-distance interface, moving
 // relative to the domain with moving-wall bounce-back and refill; hover in ground effect against the
 // algebraic models. Quick variants at N = 32; the sweeps run with `ship_lrm sweep ground`.
 #include <gtest/gtest.h>
@@ -72,7 +72,7 @@ TEST(Ground, StreamOverGroundMovingWithItStaysUniformWhileTheGroundMoves) {
   // Smagorinsky to act on). At 15 m/s it diverges after ~300 steps; at 5 m/s it reaches 0.9 % after
   // 800 steps. The run here is 5 m/s and 600 steps, so the check covers the wall motion and the
   // refill, not that corner. With a rotor the sweeps no longer diverge, but from ~12 m/s the
-  // mode still covers the ground (docs/benchmarks.md, session 11).
+  // mode still covers the ground (docs/benchmarks.md, 2026-11-24).
   lrm::LrmDomain d(quick_config());
   const Vec3 stream(-5.0, 0.0, 0.0);
   const auto ground = add_ground_moving_with(d, stream);
@@ -189,7 +189,7 @@ TEST(Ground, BadSetUpsAreRefusedBeforeAnyStep) {
 }
 
 TEST(Ground, HoverAtHalfARadiusLiesBetweenCheesemanBennettAndHayden) {
-  // Issue 4, acceptance 4, quick variant (N = 32): the thesis' LRM matched the algebraic models for
+  // ground-effect target, quick variant (N = 32): the thesis' LRM matched the algebraic models for
   // 0.5 < z/R < 0.6 (fig. 8.9); at z/R = 0.5 the ratio must lie between Hayden (0.625) and
   // Cheeseman-Bennett (0.75). Higher above the ground the LRM still fails (docs/benchmarks.md).
   lrm::IsolatedRotorCase c;
@@ -211,10 +211,10 @@ TEST(Ground, HoverAtHalfARadiusLiesBetweenCheesemanBennettAndHayden) {
 }
 
 TEST(Ground, HoverWithEntrainingFacesStaysBelowOneWhereTheThesisFailed) {
-  // Issue 4, acceptance 4, quick variant (N = 32, a = 1.25). The thesis' LRM (fig. 8.9), and this one
+  // ground-effect target, quick variant (N = 32, a = 1.25). The thesis' LRM (fig. 8.9), and this one
   // with the thesis' faces, put v_IGE / v_OGE above 1 from z/R = 0.8 up (N = 32: 1.077 at z/R = 1):
   // the velocity side faces hold still air, a wall for the ground's wall jet, which turns up along
-  // them and comes back into the rotor (docs/benchmarks.md, session 26). With entraining pressure
+  // them and comes back into the rotor (docs/benchmarks.md, 2026-12-02). With entraining pressure
   // faces the jet leaves at the ambient pressure and the air drawn in comes from rest; up to z/R = 1
   // the ratio must then rise with height and stay below 1, as both algebraic models do (measured
   // 0.78, 0.83, 0.91 here; N = 64 with 30 s averages: 0.76, 0.93, 0.98). Higher up it is still not
@@ -243,7 +243,7 @@ TEST(Ground, HoverWithEntrainingFacesStaysBelowOneWhereTheThesisFailed) {
 }
 
 TEST(Ground, ForwardFlightAt6MetresPerSecondHasAGroundEffectThatFadesWithHeight) {
-  // Issue 4, acceptance 4, quick variant (N = 32): the thesis' LRM predicted no ground effect at all
+  // ground-effect target, quick variant (N = 32): the thesis' LRM predicted no ground effect at all
   // in forward flight (fig. 8.11). Physics asks for two things at low speed (6 m/s, V / v_h = 0.5,
   // where Cheeseman-Bennett gives 0.81 at z/R = 0.5 and 0.95 at z/R = 1): the inflow is reduced
   // (ratio below 1) and the reduction fades with height (the thesis, 8.2.3: a monotonically
@@ -263,7 +263,7 @@ TEST(Ground, ForwardFlightAt6MetresPerSecondHasAGroundEffectThatFadesWithHeight)
 }
 
 TEST(Ground, ForwardFlightAt15MetresPerSecondRisesMonotonicallyWithHeightAtTheSweepsLatticeVelocity) {
-  // Issue 4, acceptance 4, quick variant (N = 32) at 15 m/s, where Cheeseman-Bennett's ratio rises
+  // ground-effect target, quick variant (N = 32) at 15 m/s, where Cheeseman-Bennett's ratio rises
   // with height (0.945, 0.962, 0.979 at z/R 0.5, 0.6, 0.8). At the thesis' lattice velocity (30 m/s)
   // a grid-scale mode from the corner where the inflow face meets the moving ground made the LRM's
   // jump about (0.43, 1.03, 0.60 with the rotor's far field at the faces; this test fails there); at

@@ -1,4 +1,4 @@
-// The flight model's end of a linked rotor <-> LRM coupling (inflow_link.hpp; issue 6 acceptance 3:
+// The flight model's end of a linked rotor <-> LRM coupling (inflow_link.hpp; fault check:
 // a fluid side that stops answering makes the flight model fall back to Pitt-Peters, no crash).
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The LRM domain on the CUDA backend against the CPU backend (issue 4): the same lattice (velocity
+// The LRM domain on the CUDA backend against the CPU backend: the same lattice (velocity
 // faces front and sides, impedance faces back, top and bottom; no bodies), the same frame motion,
 // rotor forces and inflow read-out. The backends share every per-cell function
 // and are compiled without contraction, so the fields must agree to rounding after one step and
@@ -64,7 +64,7 @@ TEST(CudaLrmDomain, MatchesCpuInATurningStreamWithRotorForces) {
 }
 
 // The same lattice on bare solvers, started in the domain's rotating air with the frame's forces on:
-// the first step on each backend (session 38: on an H200 the LRM domain's backends parted after one
+// the first step on each backend (2026-12-04: on an H200 the LRM domain's backends parted after one
 // step at the back face's impedance cells in a turning domain, while the same per-cell functions run
 // on the host in the CUDA backend's order agree with the CPU backend bit for bit; this case tells
 // whether the device parts from the host in the solver itself or in how the domain drives it).

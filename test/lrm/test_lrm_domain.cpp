@@ -1,4 +1,4 @@
-// LRM domain, isolated rotor (issue 4, thesis 8.1): a uniform stream stays uniform; the inflow of a
+// LRM domain, isolated rotor (thesis 8.1): a uniform stream stays uniform; the inflow of a
 // uniformly loaded rotor in fast forward flight against momentum theory (Glauert) at two lattice Mach
 // numbers; the coupled trim. Quick variants at N = 32; the full sweeps run with `ship_lrm sweep inflow`.
 #include <gtest/gtest.h>
@@ -36,7 +36,7 @@ double stream_deviation_after_1000_steps(const lrm::LrmConfig& cfg, const rotor:
 class UniformStream : public ::testing::TestWithParam<std::array<double, 3>> {};
 
 TEST_P(UniformStream, StaysUniformThroughTheOpenFaces) {
-  // Issue 4, acceptance 3 (translating domain, body-frame formulation: the motion is the stream at
+  // uniform-stream bound (translating domain, body-frame formulation: the motion is the stream at
   // the faces): to 0.5 % of the stream speed after 1000 steps, in every fluid cell.
   const auto s = GetParam();
   const rotor::Vec3 stream(s[0], s[1], s[2]);
@@ -48,7 +48,7 @@ TEST_P(UniformStream, StaysUniformThroughCharacteristicInlets) {
   // The same with the velocity faces as characteristic inlets (LrmConfig::characteristic_inlets). Where
   // a side inlet meets the back face, the edge cell's outgoing-wave velocity was once taken from the
   // Zou-He density of the mixed population sums instead of the edge's own density: 28 % of a 15 m/s
-  // stream in the edge cells (session 36).
+  // stream in the edge cells (2026-12-04).
   const auto s = GetParam();
   const rotor::Vec3 stream(s[0], s[1], s[2]);
   lrm::LrmConfig cfg = quick_config();
@@ -61,7 +61,7 @@ INSTANTIATE_TEST_SUITE_P(Streams, UniformStream,
                          ::testing::Values(std::array<double, 3>{-30, 0, 0}, std::array<double, 3>{-20, 6, 0},
                                            std::array<double, 3>{-10, -3, 0}));
 
-// Faces are configurable (issue 4): a pressure outlet holds the ambient density while the velocity
+// Faces are configurable: a pressure outlet holds the ambient density while the velocity
 // faces take the stream (the values the domain writes are a density there, not a velocity).
 TEST(LrmDomain, PressureOutletFacesKeepAUniformStreamUniform) {
   auto c = quick_config();
@@ -223,7 +223,7 @@ double fast_forward_ratio(const lrm::LrmConfig& cfg) {
 }
 }  // namespace
 
-// Issue 4, acceptance 2, quick variant (N = 32, 65 m/s; the sweeps at N = 64 and finer run with `ship_lrm
+// forward-flight inflow target, quick variant (N = 32, 65 m/s; the sweeps at N = 64 and finer run with `ship_lrm
 // sweep inflow --outlet-sigma`). With the partially non-reflecting outlets (lbm::FaceCondition::
 // pressure_relaxation) the mean inflow is a property of the flow, not of the lattice's time step: the
 // same grid at half the time step (lattice Mach 0.15 instead of 0.3) gives the same inflow. The thesis'
@@ -264,9 +264,9 @@ TEST(IsolatedRotor, WithTheRotorsFarFieldAtTheFacesTheDomainSizeDropsOut) {
 // In fast edgewise flight (65 m/s, v / V = 0.03) Glauert's formula is exact for the uniformly loaded
 // disk: its chordwise-integrated load is elliptic along the span, so linear theory gives a mean induced
 // velocity of exactly T / (2 rho A V) (Prandtl's elliptic wing; the free-wake disk meets it within
-// 0.6 % at 40 - 50 m/s, docs/benchmarks.md session 43). With the rotor's far field at the faces the
+// 0.6 % at 40 - 50 m/s, docs/benchmarks.md 2026-12-05). With the rotor's far field at the faces the
 // LRM approaches it from below as the grid refines: 0.904, 0.935, 0.952, 0.962 and 0.982 at N = 32, 48,
-// 64, 96 and 128 (docs/benchmarks.md, session 50). Checked at N = 32 and 48: each within the quick
+// 64, 96 and 128 (docs/benchmarks.md, 2026-12-06). Checked at N = 32 and 48: each within the quick
 // variant's 10 %, and nearer at N = 48.
 TEST(IsolatedRotor, InFastForwardFlightTheInflowConvergesOnGlauertsLimit) {
   double ratio[2];
@@ -361,7 +361,7 @@ TEST(IsolatedRotor, WithAFaceGridTheFarFieldIsThatOfTheGridsAirAtTheHub) {
 // Steady axial flow through a uniformly loaded disk is where momentum theory is exact (Froude's
 // theorem; the free-wake disk meets it within 0.4 %, test_free_wake_disk.cpp). In a climb at V_c =
 // v_h (11.62 m/s, momentum theory 7.185 m/s) the LRM with its rotor's far field converges on it:
-// 0.962 at N = 32, 1.000 at N = 64, 1.009 at N = 96 (docs/benchmarks.md, session 47). Checked at
+// 0.962 at N = 32, 1.000 at N = 64, 1.009 at N = 96 (docs/benchmarks.md, 2026-12-05). Checked at
 // N = 32 and 64: within 2 % at N = 64, and nearer than at N = 32.
 TEST(IsolatedRotor, InAnAxialClimbTheInflowConvergesOnMomentumTheory) {
   double ratio[2];
@@ -401,7 +401,7 @@ TEST(IsolatedRotor, AClimbRateMustBeFiniteNonNegativeAndAwayFromTheGround) {
 #include "ship_lrm/lrm/lrm_inflow.hpp"
 
 TEST(CoupledLrm, TrimAt30MetresPerSecondConvergesNearPittPetersPower) {
-  // Issue 4, acceptance 5, quick variant (N = 32, one speed; the sweep 10-50 m/s at N = 64 runs with
+  // coupled-trim target, quick variant (N = 32, one speed; the sweep 10-50 m/s at N = 64 runs with
   // `ship_lrm trim --inflow lrm`): the Bo 105 trimmed with the LRM domain as its inflow model.
   const auto p = flight::load_default_bo105();
   flight::TrimTarget t;

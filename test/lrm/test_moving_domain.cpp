@@ -1,4 +1,4 @@
-// The LRM domain moving with the rotorcraft (issue 4, acceptance 3; ARCHITECTURE.md "Moving the
+// The LRM domain moving with the rotorcraft (uniform-stream bound; docs/design.md, "Moving the
 // domain"): the grid is fixed to the rotorcraft, the faces get the air velocity relative to it and
 // every cell the frame's fictitious forces (Landau & Lifshitz, Mechanics, eq. 39.7).
 #include <gtest/gtest.h>
@@ -62,7 +62,7 @@ TEST(FrameForce, MatchesTheRotatingFrameFormula) {
 }
 
 TEST(MovingDomain, StillAirStaysStillThroughATranslatingAcceleratingAndRotatingDomain) {
-  // Issue 4, acceptance 3: the domain flies through still air while it accelerates and its rotation
+  // uniform-stream bound: the domain flies through still air while it accelerates and its rotation
   // rate changes. Seen from the grid the air moves at R^T (W - V) - omega x r. Every cell must
   // follow that to 0.5 % of the stream speed after 1000 steps. Without the fictitious forces the
   // interior would keep its old velocity while the faces turned.
@@ -115,7 +115,7 @@ rotor::RotorInflow rotor_inflow(lrm::LrmConfig c, const lrm::LrmDomain::Motion& 
 }  // namespace
 
 TEST(MovingDomain, RotorWakeInADomainMovingAtConstantVelocityIsTheFixedDomainsWake) {
-  // Issue 4, acceptance 3, second half. In the body-frame formulation a domain flying at 25 m/s with
+  // uniform-stream bound, second half. In the body-frame formulation a domain flying at 25 m/s with
   // a 5 m/s tail wind is, by Galilean invariance, the fixed domain with a 20 m/s stream at its
   // faces: the two must agree exactly, not to a tolerance.
   lrm::LrmDomain::Motion moving, fixed;

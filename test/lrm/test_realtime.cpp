@@ -1,4 +1,4 @@
-// Real-time mode of the LRM inflow (issue 4, "firm deadlines"): an inflow that misses its deadline is
+// Real-time mode of the LRM inflow ("firm deadlines"): an inflow that misses its deadline is
 // replaced by Pitt-Peters for that step and counted, never served late; one that makes it is exactly
 // the simulated-time (synchronous) result.
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
-// The ship as a wall of the LRM domain (issue 4 "ship walls", issue 5 "from the same geometry and
+// The ship as a wall of the LRM domain (the ship walls "from the same geometry and
 // motion"): its velocity relative to the moving, turning grid must be the rigid-body velocity that
 // finite differences of its points' positions give, and a ship at rest in the air must leave a
 // uniform stream through a translating and rotating domain uniform (no-slip walls moving with the
-// fluid, re-voxelised as they cross the grid, disturb nothing; issue 4 acceptance 3's 0.5 %).
+// fluid, re-voxelised as they cross the grid, disturb nothing; uniform-stream bound's 0.5 %).
 #include <gtest/gtest.h>
 
 #include "ship_lrm/lrm/ship_walls.hpp"
@@ -106,7 +106,7 @@ double disturbance(double height, const Vector3d& v, const Vector3d& omega, int 
   return worst;
 }
 
-// The stream stays uniform to 0.5 % of the domain's speed (issue 4, acceptance 3), through more than
+// The stream stays uniform to 0.5 % of the domain's speed (uniform-stream bound), through more than
 // ten re-voxelisations.
 void expect_uniform(double height, const Vector3d& v, const Vector3d& omega, int nodes = 16) {
   std::size_t vox = 0;
@@ -141,7 +141,7 @@ TEST(ShipInDomain, UniformStreamStaysUniformWithTheHullFillingTheLowerHalf) {
 // KNOWN DEFECT (docs/benchmarks.md, "Approach"): the same while the domain also turns (0.03 rad/s):
 // 0.060 m/s at N = 16 and 0.032 m/s at N = 32 (1.5 % and 0.8 % of 4.1 m/s), no longer in the gap but
 // in the fluid at the stern's corner, whose staircase changes as the grid turns past it; the error
-// halves with the cell size (first order) but is above acceptance 3's 0.5 % at these resolutions.
+// halves with the cell size (first order) but is above the uniform-stream bound's 0.5 % at these resolutions.
 TEST(ShipInDomain, DISABLED_UniformStreamStaysUniformWithTheHullFillingTheLowerHalfWhileTheDomainTurns) {
   expect_uniform(3.5, Vector3d(-4.0, 1.0, 0.0), Vector3d(0, 0, 0.03));
 }

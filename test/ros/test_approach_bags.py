@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 6 acceptance 2 and 6: two simulated-time runs of approach.launch with record:=true, each on its
+"""recorded-bag check: two simulated-time runs of approach.launch with record:=true, each on its
 own ROS master, give bags whose rotor loads are identical in every field and every sample; the analysis
 script turns such a bag into its plots, its summary and the loads as CSV, matching the bag. The bags
 also hold every request of the flight model to the LRM solver and every answer from t = 0

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 6 acceptance 1 and 2 (rostest, launched by approach.test, by free_flight.test with
+"""approach launch check (rostest, launched by approach.test, by free_flight.test with
 ~free_flight true, and by wake_server.test, whose solver gets the table from the wake server): the approach in simulated time on a tiny table publishes its topics and every tf
 frame; its loads are finite and identical, sample by sample, to those of the ROS-free batch tool
 `ship_lrm approach` for the same configuration (held on the path, or flying freely after the start-up:

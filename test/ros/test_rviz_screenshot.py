@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 6 acceptance 4: rviz opens rviz/lrm.rviz headless (Xvfb, software OpenGL) while a short real-time
+"""rviz check: rviz opens rviz/lrm.rviz headless (Xvfb, software OpenGL) while a short real-time
 approach runs on a tiny table, and renders a non-empty image: the screenshot (kept at OUT.png) must show
 the scene's coloured content (the slice's rainbow, the ship, the arrows), not only the empty
 background and the grey panels.

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 6 acceptance 3 (rostest, launched by fault.test): SIGKILL the stand-alone LRM solver while the
+"""fault check (rostest, launched by fault.test): SIGKILL the stand-alone LRM solver while the
 approach runs in real time. After the kill (plus the link's timeout) every load must be Pitt-Peters'
 (fallback), finite, and the run must reach its end ("done" on approach/status); the flight model's
 diagnostics must report the loss at ERROR level; the nodelet manager must still be there."""

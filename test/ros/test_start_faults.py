@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 6 acceptance 3, the faults at start: a missing wake table stops the run with a message that
+"""fault check, the faults at start: a missing wake table stops the run with a message that
 names the command that makes it (`ship_lrm wake --preset default --out PATH`), and an invalid parameter
 is refused at start with its name and range (or its choices), or its type. Each launch must end by itself (no
 hang), and no process may die of a signal (a crash); roslaunch runs on a port of its own.

@@ -162,7 +162,7 @@ TEST(ShipApproach, TheRotorsFarFieldFeedsTheTableFacesAndIsRescaledWithTheThrust
 // inside it must keep the table's air (thesis fig. 9.3 (c)). The domain starts from the table's air
 // (LrmDomain::restart_flow): started from the free stream instead, the thesis' outlets, which have no
 // reference pressure, kept that start's disturbance and the centre plane differed from the table by
-// 8 - 13 m/s RMS over the deck of the default table (docs/benchmarks.md, session 32). Measured here:
+// 8 - 13 m/s RMS over the deck of the default table (docs/benchmarks.md, 2026-12-03). Measured here:
 // 1.2 m/s (6 % of the wind) from 1 to 1.9 s of the tiny table, hovering 10 m behind the spot.
 TEST(ShipApproach, WithoutTheRotorsForcesTheDomainKeepsTheTablesWake) {
   lrm::ApproachConfig c = config("lrm", 1.9);
@@ -231,7 +231,7 @@ TEST(ShipApproach, TablesThatCannotServeAnApproachAreRefusedByName) {
   }
 }
 
-// Real time (paced runs, issue 6): with a deadline no step can miss, the lock-step real-time approach
+// Real time (paced runs): with a deadline no step can miss, the lock-step real-time approach
 // serves exactly the simulated-time LRM loads; with deadlines already past, every step is Pitt-Peters'
 // (counted as a miss), never a late LRM answer.
 TEST(ShipApproach, RealTimeOnTimeIsTheSimulatedRunAndLateStepsArePittPeters) {
@@ -328,7 +328,7 @@ TEST(ApproachFluid, LongJobsPlaceTheShipAtEveryLbmStep) {
   EXPECT_NEAR(last.mean.z(), single.mean.z(), 0.1 * std::abs(single.mean.z()));
 }
 
-// A real-time LRM that cannot keep up (issue 6 defect: the N = 32 approach on 2 cores diverged with
+// A real-time LRM that cannot keep up (a defect of the ROS layer: the N = 32 approach on 2 cores diverged with
 // its fluid 5.6 s behind) drops its backlog: with a catch-up limit of L LBM steps a job runs only its
 // newest L steps, with the walls and faces placed at their times, and the domain's clock still reaches
 // the flight model's time, so the next job is an ordinary one. Without the limit the same job runs

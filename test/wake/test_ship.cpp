@@ -1,4 +1,4 @@
-// Ship geometry and ship motion (issue 5).
+// Ship geometry and ship motion.
 #include <gtest/gtest.h>
 
 #include <cmath>

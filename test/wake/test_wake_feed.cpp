@@ -1,4 +1,4 @@
-// Feeding the LRM faces from a wake table (issue 5): a table holding a uniform stream must give
+// Feeding the LRM faces from a wake table: a table holding a uniform stream must give
 // exactly the domain that the uniform stream gives, and a refresh happens only when it is due.
 #include <gtest/gtest.h>
 
@@ -137,7 +137,7 @@ struct FedDomain {
 
 }  // namespace
 
-// Issue 5 acceptance 4 for the path that feeds the faces: every velocity inlet and impedance outlet
+// table round trip for the path that feeds the faces: every velocity inlet and impedance outlet
 // of a turned domain that moves and turns gets R^T (u(hub + R r, t) - v_hub) - omega x r of a field
 // linear in space and time, in lattice units (grid_feed.hpp; thesis 5.2: the faces impose the
 // undisturbed air relative to the moving domain).
@@ -220,7 +220,7 @@ TEST(WakeFaceFeed, CudaFeedMatchesTheHostFeed) {
   EXPECT_EQ(a.rho, b.rho);
 }
 
-// bench wake (issue 5 acceptance 5) over the tiny table: the faces are refreshed as the hub flies
+// bench wake (face-feed cost target) over the tiny table: the faces are refreshed as the hub flies
 // through it, and the feed is timed both ways, each step to its end and in the loop without waits.
 TEST(WakeFaceFeed, BenchmarkTimesTheFeedEachStepAndInTheLoop) {
   lrm::LrmConfig c;

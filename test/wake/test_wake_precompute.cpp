@@ -1,5 +1,5 @@
-// The ship-wake precompute (issue 5): the flow separates behind the hangar door (acceptance 1, quick
-// variant), a stopped run resumes to the same table (acceptance 6), bad input is refused before any step.
+// The ship-wake precompute: the flow separates behind the hangar door (quick
+// variant), a stopped run resumes to the same table, bad input is refused before any step.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -90,7 +90,7 @@ TEST(WakePrecompute, BadInputIsRefusedBeforeAnyStep) {
   EXPECT_THROW(preset("huge"), ship_lrm::lbm::ConfigError);
 }
 
-// Acceptance 1, quick variant: the 1/50 model at rest in a 9.77 m/s wind; behind the hangar door the
+// Separation, quick variant: the 1/50 model at rest in a 9.77 m/s wind; behind the hangar door the
 // mean flow above the deck is reversed (u_x > 0 against the wind's -x). Full variant: README
 // (`ship_lrm wake --scale model --N 48 ...` and scripts/plot_wake.py).
 TEST(WakePrecompute, FlowSeparatesBehindTheHangarDoor) {
@@ -132,8 +132,8 @@ TEST(WakePrecompute, FlowSeparatesBehindTheHangarDoor) {
 // that grows at the inlet. The probe (stream_stability.hpp) runs at the wake's lattice viscosity and
 // Smagorinsky constant, for the model case (N = 48, 9.77 m/s) and the default table, at 1.15 times the
 // wind: the fastest mean flow on the centre plane of the model case is 1.11 U (above the mast). There
-// a disturbance must decay; at the former default lattice wind 0.1 it grows. (Session 35 found that
-// the noisy inlet of sessions 13 - 33 came mostly from the reflecting velocity inlet, now replaced by
+// a disturbance must decay; at the former default lattice wind 0.1 it grows. (It was found on 2026-12-04 that
+// the noisy inlet of 2026-12-01 to 2026-12-03 came mostly from the reflecting velocity inlet, now replaced by
 // a characteristic one: StreamStability.CharacteristicInletLetsTheDisturbanceLeave; the bulk's stable
 // range still bounds the lattice wind.)
 TEST(WakePrecompute, DefaultLatticeWindKeepsTheStreamStable) {

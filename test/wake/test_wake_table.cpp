@@ -1,4 +1,4 @@
-// The wake table: write -> read -> interpolate round trip and bad files (issue 5, acceptance 4, 6).
+// The wake table: write -> read -> interpolate round trip and bad files .
 #include <gtest/gtest.h>
 #include <hdf5.h>
 

@@ -150,7 +150,7 @@ SHIP_LRM_HD Macro macro_from_populations(const float g[Q], const float force[3])
   return macro_from_moments(rho, j, force);
 }
 
-// Fictitious forces of a non-inertial frame (the LRM domain fixed to the rotorcraft; ARCHITECTURE.md
+// Fictitious forces of a non-inertial frame (the LRM domain fixed to the rotorcraft; docs/design.md
 // "Moving the domain"). Per unit mass, with r from the frame's reference point (Landau & Lifshitz,
 // Mechanics, 3rd ed., section 39, eq. 39.7):
 //   a = -a_O - dOmega/dt x r - Omega x (Omega x r) - 2 Omega x u.

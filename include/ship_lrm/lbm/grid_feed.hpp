@@ -1,5 +1,5 @@
 // Open-boundary velocities from a gridded velocity field that lives in another frame: the ship-wake
-// table feeding the LRM's faces (thesis 5.2, 6.3; issue 5). Written once for the host and the device
+// table feeding the LRM's faces (thesis 5.2, 6.3). Written once for the host and the device
 // (hd.hpp): WakeTable::sample and LrmDomain's host path call these functions, and so does the CUDA
 // backend's feed kernel, which computes the face values where the faces live, so that only the pose
 // crosses the bus per refresh (docs/design.md, "Feeding the LRM").

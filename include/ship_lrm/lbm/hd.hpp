@@ -1,5 +1,5 @@
 // Host/device annotation shared by the CPU (OpenMP) and CUDA backends, so every per-cell
-// formula is written exactly once (ARCHITECTURE.md, "Core modules": lbm).
+// formula is written exactly once (docs/design.md, "LBM core").
 #pragma once
 
 #if defined(__CUDACC__)

@@ -1,4 +1,4 @@
-// The ship approach of thesis 9.1, ROS-free (the batch path of ARCHITECTURE.md; the ROS Scenario
+// The ship approach of thesis 9.1, ROS-free (the batch path; the ROS Scenario
 // nodelet drives the same class): a Bo 105 moved along a prescribed path from behind the ship to a
 // hover over its flight deck, with the controls fixed at the Pitt-Peters trim for the approach's
 // airspeed (a whirl tower with a fuselage, thesis 9.1), while the LRM domain around the rotor is fed

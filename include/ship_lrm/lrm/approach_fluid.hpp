@@ -1,4 +1,4 @@
-// The fluid side of the ship approach (thesis 9.1; ARCHITECTURE.md: what the LrmSolver nodelet runs):
+// The fluid side of the ship approach (thesis 9.1; what the LrmSolver nodelet runs):
 // the LRM domain fixed to the rotor, fed at its faces by the wake table, holding the fuselage, the
 // moving ship and the sea as walls. It answers the flight side's InflowRequests (inflow_link.hpp):
 // before it takes a request's loads it places walls and faces for the request's table time and

@@ -1,4 +1,4 @@
-// Named set-ups of the LRM domain's six faces (issue 4, acceptances 2 and 4), shared by the command-line
+// Named set-ups of the LRM domain's six faces (forward-flight inflow target), shared by the command-line
 // tools (`sweep`, `trim --inflow lrm`, `approach`, `bench lrm`) and the ROS nodelets' parameters.
 #pragma once
 

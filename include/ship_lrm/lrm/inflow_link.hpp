@@ -1,4 +1,4 @@
-// The flight model's side of a rotor <-> LRM coupling whose fluid runs elsewhere (ARCHITECTURE.md:
+// The flight model's side of a rotor <-> LRM coupling whose fluid runs elsewhere (docs/design.md,
 // the ROS FlightModel and LrmSolver nodelets; the batch tool in one process). Every call the flight
 // model makes on its inflow model (thesis 6.5, fig. 5.5: rotor state and force harmonics in, inflow
 // out) becomes one InflowRequest handed to an InflowLink, which returns the fluid's answer. The

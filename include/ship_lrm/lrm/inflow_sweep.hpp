@@ -39,7 +39,7 @@ struct IsolatedRotorCase {
 constexpr double kForwardGroundLatticeVelocity = 60.0;
 
 // Algebraic ground-effect models at equal thrust, induced velocity in / out of ground effect for the
-// rotor at height z over the ground (REFERENCE.md; thesis figs. 8.9-8.11):
+// rotor at height z over the ground (thesis figs. 8.9-8.11):
 // Cheeseman & Bennett 1955 (ARC R&M 3021), with its forward-flight form (Johnson, Rotorcraft
 // Aeromechanics, 2013, sec. 5.5.1): 1 - (R/4z)^2 / (1 + (V/v_i)^2), v_i the induced velocity out of
 // ground effect; Hayden 1976 (J. AHS 21(3)), a power ratio: 1 / (0.9926 + 0.0379 (2R/z)^2).

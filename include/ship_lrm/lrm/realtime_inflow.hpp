@@ -1,4 +1,4 @@
-// Wall-clock real-time mode of the LRM inflow (issue 4; ARCHITECTURE.md "Real time"): a slow inflow
+// Wall-clock real-time mode of the LRM inflow (docs/design.md, "Real time"): a slow inflow
 // model (the LRM domain in this process, or the LRM solver behind a LinkedInflow, e.g. the ROS
 // nodelet) runs in its own thread while the flight model keeps its pace. Every coupling step posts the rotor
 // state to the LRM thread and waits for that step's inflow until a firm deadline. An inflow that
@@ -54,14 +54,14 @@ enum class RealTimeMode { LockStep, Pipelined };
 // 22: over ROS, alternating with 3 in five back-to-back pairs, fewer misses in four and half as many
 // in sum (a wall change with its flow restart still takes 3 - 4 ms, and this VM's pace varies by 2x
 // from minute to minute), for an inflow 13.2 ms old at N = 32 instead of 9.9 ms, which left C_T's
-// distance to the simulated-time run unchanged (docs/benchmarks.md, "ROS layer in real time", session 22).
+// distance to the simulated-time run unchanged (docs/benchmarks.md, "ROS layer in real time", 2026-12-02).
 constexpr int kPipelineDepth = 4;
 
 // LBM steps one job of a real-time LRM may run (LrmInflow::set_catch_up_limit): a job that covers more
 // (the LRM had fallen behind the wall clock) drops the older part of its backlog. No more than a
 // pipelined job's kPipelineDepth intervals: a longer job would miss its deadline, the next would cover
 // still more, and the pipeline would stay behind (a limit of 4 while jobs were due 2 intervals after
-// posting let one disturbance cost up to 90 % of a 20 s run, session 10).
+// posting let one disturbance cost up to 90 % of a 20 s run, 2026-11-24).
 constexpr long kRealTimeCatchUpSteps = kPipelineDepth;
 
 class RealTimeInflow final : public rotor::InflowModel {

@@ -1,5 +1,5 @@
-// The ship and the sea in the LRM domain (issue 4 "ship walls through a signed-distance provider";
-// issue 5: from the same geometry and motion as the wake table; thesis 6.4, fig. 9.3). The LRM grid is
+// The ship and the sea in the LRM domain (the ship walls through a signed-distance provider,
+// from the same geometry and motion as the wake table; thesis 6.4, fig. 9.3). The LRM grid is
 // fixed to the rotorcraft (domain.hpp), so the ship moves through it: its cells are no-slip walls that
 // move with the ship's rigid motion relative to the grid (moving-wall bounce-back), re-voxelised when
 // the ship has moved by a quarter cell anywhere in the domain, with the refill of domain.hpp for the

@@ -1,4 +1,4 @@
-// Feeding the LRM's faces from a ship-wake table (issue 5; thesis 5.2, 6.3): every open-boundary cell
+// Feeding the LRM's faces from a ship-wake table (thesis 5.2, 6.3): every open-boundary cell
 // of the LRM domain gets the table's air velocity at its position (trilinear in space, linear in time),
 // relative to the hub and in the domain's axes; the velocity faces impose it, the impedance faces take
 // it as their reference flow.
@@ -34,7 +34,7 @@ class WakeFaceFeed {
   Pose last_;
 };
 
-// Cost of serving the faces against the LRM step (issue 5, acceptance 5): an LRM domain whose hub flies
+// Cost of serving the faces against the LRM step (face-feed cost target): an LRM domain whose hub flies
 // at `speed` m/s towards the bow, `height` m above the landing spot (x = -12.75 m full scale), through
 // the table; the faces are refreshed before every LBM step.
 struct WakeFeedBenchmark {

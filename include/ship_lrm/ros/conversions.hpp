@@ -1,5 +1,5 @@
 // Translation between the core's structs and ship_lrm's ROS messages, and the tf frames of REP 103/105
-// (ARCHITECTURE.md "Frames"): the core's mean frame (x forward along the ship's course, y starboard,
+// (docs/user_guide.md, "tf tree"): the core's mean frame (x forward along the ship's course, y starboard,
 // z down) is `world_ned`, a child of the ENU root `world`; FRD bodies get FLU twins by a half turn
 // about x. Nothing here computes physics: values are copied, float64 to double, so a request
 // that crosses ROS arrives bit for bit.

@@ -5,7 +5,7 @@
 // clients/roscpp/src/libros/topic_manager.cpp). Every message published on the topic then reaches
 // the subscriber twice, both copies queued by the same publish, so the copy comes right after its
 // original. The nodelets do exactly that: the LrmSolver subscribes rotor/forces on its own thread
-// while the FlightModel advertises it (session 42: the solver served every request twice, and its
+// while the FlightModel advertises it (2026-12-04: the solver served every request twice, and its
 // fluid ran twice as far as the flight model; docs/design.md, "Requests delivered twice").
 #pragma once
 

@@ -1,4 +1,4 @@
-// Ship geometry as a signed-distance field (issue 5; thesis 5.1, 6.2): a parametric generic destroyer
+// Ship geometry as a signed-distance field (thesis 5.1, 6.2): a parametric generic destroyer
 // with the NATO Generic Destroyer's proportions, a Simple Frigate Shape 2 preset, and STL import for
 // users who have the real geometry. Export as a triangle mesh (STL) for rviz and ParaView.
 //

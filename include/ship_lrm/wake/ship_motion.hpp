@@ -1,4 +1,4 @@
-// Ship motion (issue 5; thesis 6.2, 7.2): heave, roll and pitch about a centre of motion, as
+// Ship motion (thesis 6.2, 7.2): heave, roll and pitch about a centre of motion, as
 // sinusoids (the NRC wind-tunnel cases, thesis ref. [12]) or from a user's time-series file.
 //
 // The ship frame (ship_geometry.hpp: x forward, y starboard, z down) moves relative to the "mean
@@ -99,7 +99,7 @@ class TableMotion final : public ShipMotion {
   std::vector<double> t_, heave_, roll_, pitch_;
 };
 
-// The named cases (thesis 7.2, REFERENCE.md): "static"; "pitch": 5 deg at 1 Hz on the 1/50 model;
+// The named cases (thesis 7.2): "static"; "pitch": 5 deg at 1 Hz on the 1/50 model;
 // "heave": 0.04 m at 1 Hz on the model; both Froude-scaled at full scale (amplitudes x 50 (heave),
 // frequency / sqrt(50)); "approach": the full-scale heave + pitch of the approach (regular head
 // seas, Hs 2 m, Tp 15 s, 15 kn: see docs/design.md); or a path to a CSV file (TableMotion).

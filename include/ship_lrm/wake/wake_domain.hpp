@@ -1,4 +1,4 @@
-// The ship-wake domain (issue 5; thesis 6.2): a lattice-Boltzmann box around the ship, 4 l long,
+// The ship-wake domain (thesis 6.2): a lattice-Boltzmann box around the ship, 4 l long,
 // 1.5 l wide and 0.88 l high (l: ship length), the stem at 3.25 l from the outflow, the waterline
 // 0.088 l above the floor, the ship centred across. Inflow at the bow end (velocity inlet, the wind
 // from ahead), outflow at the stern end (pressure outlet), slip walls at the sides and the top,
@@ -29,7 +29,7 @@ struct WakeConfig {
   double wind = 20.58;        // m/s, wind over the deck from ahead (thesis 9.1: 20.58 full scale, 7: 9.77 model)
   // The wind in lattice units: Mach 0.078, the thesis' full-scale value (0.3 c_s at 80 m/s). BGK +
   // Smagorinsky at the wake's tau is unstable from Mach 0.15 - 0.16 (`ship_lrm validate
-  // stream-stability`); at 0.1 (Mach 0.17, the default until session 34) the ship seeded a growing
+  // stream-stability`); at 0.1 (Mach 0.17, the default until 2026-12-04) the ship seeded a growing
   // noise at the inlet (docs/design.md, "The noisy inlet").
   double lattice_wind = 0.045;
   double viscosity = 1.46072e-4;  // m^2/s (thesis tables 6.2, 6.3)
@@ -39,7 +39,7 @@ struct WakeConfig {
   lbm::CollisionModel collision = lbm::CollisionModel::Bgk;
   // The wind's face as a characteristic inlet (lbm::FaceCondition::characteristic_inlet): waves from
   // the ship leave through it instead of being reflected. The thesis' reflecting inlet with the outlet
-  // opposite lets a disturbed stream grow (docs/design.md, "The noisy inlet", session 35).
+  // opposite lets a disturbed stream grow (docs/design.md, "The noisy inlet", 2026-12-04).
   bool characteristic_inlet = true;
   lbm::Backend backend = lbm::Backend::Auto;
   // domain, in ship lengths (thesis 6.2)

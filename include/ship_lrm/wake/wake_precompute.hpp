@@ -1,4 +1,4 @@
-// The ship-wake precompute (issue 5; thesis 6.2, 6.3, 7): runs a ShipWakeDomain through a start-up
+// The ship-wake precompute (thesis 6.2, 6.3, 7): runs a ShipWakeDomain through a start-up
 // period, then writes the tabulated region to a wake table at a set interval, and keeps the
 // centre-plane statistics of thesis figs. 7.2, 7.3 (mean velocity, turbulent kinetic energy) and, for
 // a periodic ship motion, their phase averages at 0, 1/4, 1/2 and 3/4 of the period (fig. 7.6).
@@ -66,7 +66,7 @@ struct PrecomputeResult {
 // Throws lbm::ConfigError / GeometryError / MotionError / TableError for bad input before any step.
 PrecomputeResult precompute_wake(const PrecomputeOptions& opt);
 
-// Named presets (issue 5): "default" (the approach scenario's table: NatoGD full scale, the approach
+// Named presets: "default" (the approach scenario's table: NatoGD full scale, the approach
 // wind and ship motion, N = 48, 30 s of frames every 0.1 s; a few minutes on 2 cores) and "tiny" (a
 // small table for tests, seconds). ConfigError for other names.
 PrecomputeOptions preset(const std::string& name);

@@ -1,4 +1,4 @@
-// The ship-wake table (issue 5; thesis 6.3): the air wake of a ship on a regular grid, one frame per
+// The ship-wake table (thesis 6.3): the air wake of a ship on a regular grid, one frame per
 // interval, in HDF5 (one chunk per frame; float16 or float32) with an XDMF side-car that ParaView
 // opens as a time series. The reader extracts the window around an LRM domain and interpolates
 // trilinearly in space and linearly in time; it holds only that window of two frames in memory, and the

@@ -1,0 +1,138 @@
+#!/usr/bin/env python3
+"""Checks the documentation as a product (run by ctest as Docs.Check):
+
+1. no tracked file (contents or path) carries development-log numbering: the words session, issue or
+   acceptance followed by a number;
+2. README.md has at most 150 lines;
+3. every relative link in README.md and docs/ resolves to a file of the repository, and a link's
+   #anchor to a heading of the linked Markdown page (GitHub's heading slugs);
+4. every repository path cited in backticks in README.md and docs/ exists, and no Markdown file is
+   named that the repository does not hold.
+
+Usage: check_docs.py REPOSITORY_ROOT. Exits 1 and lists every finding when one check fails.
+"""
+import os
+import re
+import subprocess
+import sys
+
+# Built from parts so that this file does not match itself.
+NUMBERING = re.compile(r"\b(" + "sess" + "ions?|" + "iss" + "ues?|" + "accept" + r"ances?)[ _-]?#?[0-9]", re.I)
+LINK = re.compile(r"\[[^\]]*\]\(([^)\s]+)\)")
+MD_NAME = re.compile(r"(?<![\w./:-])([\w./-]+\.md)\b")
+CODE = re.compile(r"`([^`\n]+)`")
+TOP = ("docs/", "scripts/", "config/", "include/", "src/", "test/", "launch/", "msg/", "srv/", "rviz/", ".ci/")
+README_LIMIT = 150
+
+
+def tracked_files(root):
+    try:
+        out = subprocess.run(["git", "-C", root, "ls-files", "-z"], check=True, capture_output=True).stdout
+        files = [p for p in out.decode().split("\0") if p]
+        if files:
+            return files
+    except (OSError, subprocess.CalledProcessError):
+        pass
+    # not a git checkout (a copy of the sources): every file but the build's
+    files = []
+    for d, dirs, names in os.walk(root):
+        dirs[:] = [x for x in dirs if x not in (".git", "build", ".carry")]
+        files += [os.path.relpath(os.path.join(d, n), root) for n in names]
+    return files
+
+
+def slug(heading):
+    s = heading.strip().lower()
+    s = re.sub(r"[`*_]", lambda m: "_" if m.group(0) == "_" else "", s)
+    s = re.sub(r"[^\w\- ]", "", s)
+    return s.replace(" ", "-")
+
+
+def anchors(path):
+    result = set()
+    in_code = False
+    for line in open(path, encoding="utf-8"):
+        if line.startswith("```"):
+            in_code = not in_code
+        elif not in_code and line.startswith("#"):
+            result.add(slug(line.lstrip("#")))
+    return result
+
+
+def doc_pages(root, files):
+    return [f for f in files if f == "README.md" or f == "CHANGELOG.md" or (f.startswith("docs/") and f.endswith(".md"))]
+
+
+def main():
+    root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else ".")
+    # a catkin workspace's package folder links to the repository's entries: check the repository
+    root = os.path.dirname(os.path.realpath(os.path.join(root, "README.md")))
+    files = tracked_files(root)
+    present = set(files)
+    dirs = {os.path.dirname(f) for f in files}
+    while "" in dirs:
+        dirs.discard("")
+    for d in list(dirs):
+        while d:
+            dirs.add(d)
+            d = os.path.dirname(d)
+    problems = []
+
+    for f in files:
+        if NUMBERING.search(f):
+            problems.append(f"{f}: development-log numbering in the file name")
+        full = os.path.join(root, f)
+        if not os.path.isfile(full):
+            continue
+        try:
+            text = open(full, encoding="utf-8").read()
+        except UnicodeDecodeError:
+            continue
+        for n, line in enumerate(text.split("\n"), 1):
+            m = NUMBERING.search(line)
+            if m:
+                problems.append(f"{f}:{n}: development-log numbering '{m.group(0)}'")
+
+    readme = os.path.join(root, "README.md")
+    lines = open(readme, encoding="utf-8").read().count("\n")
+    if lines > README_LIMIT:
+        problems.append(f"README.md: {lines} lines, more than {README_LIMIT}")
+
+    for page in doc_pages(root, files):
+        base = os.path.dirname(page)
+        text = open(os.path.join(root, page), encoding="utf-8").read()
+        for n, line in enumerate(text.split("\n"), 1):
+            for target in LINK.findall(line):
+                if re.match(r"^[a-z]+:", target):
+                    continue
+                path, _, anchor = target.partition("#")
+                resolved = os.path.normpath(os.path.join(base, path)) if path else page
+                if resolved not in present and resolved not in dirs:
+                    problems.append(f"{page}:{n}: link to {target}: no such file")
+                elif anchor and resolved.endswith(".md") and anchor not in anchors(os.path.join(root, resolved)):
+                    problems.append(f"{page}:{n}: link to {target}: no such heading")
+            for token in CODE.findall(line):
+                for word in token.split():
+                    word = word.strip("\"',;:()")
+                    if re.search(r"[*<>{}$|]|\.\.\.|FILE|DIR|OUT", word):
+                        continue
+                    if word.startswith(TOP):
+                        p = word.rstrip("/")
+                        if p not in present and p not in dirs:
+                            problems.append(f"{page}:{n}: cited path {word} does not exist")
+            for word in MD_NAME.findall(LINK.sub("", line)):
+                cands = {os.path.normpath(os.path.join(base, word)), word, "docs/" + word}
+                if not cands & present:
+                    problems.append(f"{page}:{n}: cited file {word} is not in the repository")
+
+    for p in problems:
+        print(p)
+    if problems:
+        print(f"check_docs: {len(problems)} problem(s)")
+        return 1
+    print(f"check_docs: {len(files)} tracked files, {len(doc_pages(root, files))} pages: no problem")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
