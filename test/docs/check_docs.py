@@ -59,7 +59,7 @@ def anchors(path):
     return result
 
 
-def doc_pages(root, files):
+def doc_pages(files):
     return [f for f in files if f == "README.md" or f == "CHANGELOG.md" or (f.startswith("docs/") and f.endswith(".md"))]
 
 
@@ -98,7 +98,7 @@ def main():
     if lines > README_LIMIT:
         problems.append(f"README.md: {lines} lines, more than {README_LIMIT}")
 
-    for page in doc_pages(root, files):
+    for page in doc_pages(files):
         base = os.path.dirname(page)
         text = open(os.path.join(root, page), encoding="utf-8").read()
         for n, line in enumerate(text.split("\n"), 1):
@@ -130,7 +130,7 @@ def main():
     if problems:
         print(f"check_docs: {len(problems)} problem(s)")
         return 1
-    print(f"check_docs: {len(files)} tracked files, {len(doc_pages(root, files))} pages: no problem")
+    print(f"check_docs: {len(files)} tracked files, {len(doc_pages(files))} pages: no problem")
     return 0
 
 
