@@ -7,6 +7,7 @@ usage: plot_flight.py trim TRIM.csv OUT.png [--reference MEASURED.csv]
        plot_flight.py sweep_ground GROUND_SWEEP.csv OUT.png [--also MORE_HOVER_SWEEPS.csv ...]
        plot_flight.py sweep_free_wake FREE_WAKE_SWEEP.csv OUT.png [--reference INFLOW_SWEEP.csv]
        plot_flight.py plane PLANE.csv OUT.png
+       plot_flight.py resolution FORWARD_RESOLUTION.csv OUT.png [--climb CLIMB.csv] [--also INFLOW_SWEEP.csv ...]
 
 trim: power, the four controls and the attitudes over speed, laid out like thesis figs. 8.5-8.7.
 A reference CSV (e.g. digitised flight-test points) with any of the same column names is drawn as
@@ -19,6 +20,10 @@ forward, v_mean over speed per height beside Glauert times the forward-flight Ch
 factor (fig. 8.11), and the ratio v_mean / v_mean(OGE) over speed beside Cheeseman-Bennett.
 sweep_free_wake: the free vortex-ring wake's mean induced velocity over speed beside Glauert's, with
 an LRM `sweep inflow` CSV as the reference if given.
+resolution: grid convergence of the isolated rotor's mean inflow at a = 1.25 and the default lattice
+velocity: over N, per edgewise speed against Glauert (the rows of a resolution CSV and of `sweep
+inflow` CSVs given with --also; the free wake's finest value as a dashed line), and in an axial climb
+and in hover against momentum theory (a `--climb` CSV).
 plane: a sweep case's time-averaged x-z plane through the hub (`--planes`), or the approach's
 (`--plane-mean-from`) beside the wake table's air at the same points and their difference.
 """
@@ -163,6 +168,60 @@ def plot_sweep_free_wake(data, out, lrm):
     finish_speed_panels(fig, axes, f"Uniformly loaded actuator disk, zero incidence{climb_note(data)}; v_h = {vh:.2f} m/s", out)
 
 
+def rows_of(data):
+    keys = [k for k in data if k != "_text"]
+    return [dict(zip(keys, vals)) for vals in zip(*(data[k] for k in keys))]
+
+
+def plot_resolution(data, out, climb, sweeps):
+    """mean inflow / exact reference over N (a = 1.25, rotor far field, default lattice velocity)."""
+    series = {}  # speed -> {N: ratio}
+    for r in rows_of(data):
+        if r.get("reach") == 1.25 and r.get("lattice_velocity_m_s") == max(30.0, r["speed_m_s"]):
+            series.setdefault(r["speed_m_s"], {})[int(r["N"])] = r["mean_over_glauert"]
+    for s in sweeps:
+        for r in rows_of(s):
+            if r["reach"] == 1.25 and r["speed_m_s"] > 0:
+                series.setdefault(r["speed_m_s"], {}).setdefault(int(r["N"]), r["lrm_mean_m_s"] / r["momentum_theory_m_s"])
+    fig, axes = plt.subplots(1, 2 if climb else 1, figsize=(12 if climb else 7, 4.5), squeeze=False)
+    ax = axes[0][0]
+    for v in sorted(series):
+        ns = sorted(series[v])
+        line, = ax.plot(ns, [series[v][n] for n in ns], "o-", label=f"LRM, {v:g} m/s")
+        free = [r for r in rows_of(data) if r["speed_m_s"] == v and r["ring_points"] > 0]
+        if free:
+            finest = min(free, key=lambda r: (r["spacing_R"], -r["ring_points"]))
+            ax.axhline(finest["mean_over_glauert"], color=line.get_color(), ls="--", lw=1,
+                       label=f"free vortex-ring wake, {v:g} m/s")
+    ax.set_ylabel("mean inflow / Glauert")
+    ax.set_title("edgewise flight (zero incidence)")
+    panels = [ax]
+    if climb:
+        ax2 = axes[0][1]
+        for vc, name in ((11.62, "axial climb V_c = v_h"), (0.0, "hover")):
+            pts = sorted((int(r["N"]), r["lrm_over_momentum_theory"]) for r in rows_of(climb)
+                         if r["reach"] == 1.25 and r["climb_m_s"] == vc and r["rotor_far_field"] == 1
+                         and r["smagorinsky"] == 0.05 and r["lattice_velocity_m_s"] == 30)
+            best = {}
+            for n, x in pts:  # one value per N (the first, the longest average, is listed first)
+                best.setdefault(n, x)
+            ax2.plot(sorted(best), [best[n] for n in sorted(best)], "o-", label=f"LRM, {name}")
+        ax2.set_ylabel("mean inflow / momentum theory")
+        ax2.set_title("axial flow")
+        panels.append(ax2)
+    for a in panels:
+        a.axhline(1.0, color="k", lw=1)
+        for y in (0.95, 1.05):
+            a.axhline(y, color="k", lw=0.5, ls=":")
+        a.set_xlabel("N (lattice nodes per 4 R)")
+        a.set_xscale("log", base=2)
+        a.grid(True, alpha=0.3)
+        a.legend(fontsize=7)
+    fig.suptitle("Isolated rotor, uniform thrust, a = 1.25, rotor far field at the faces: grid convergence")
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
 def ground_label(data):
     label = f"LRM N = {int(data['N'][0])}, a = {data['reach'][0]:g}"
     if "slip-ground" in data["_text"].get("faces", [""])[0]:
@@ -266,11 +325,12 @@ def plot_plane(path, out):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("kind", choices=["trim", "doublet", "sweep_inflow", "sweep_ground", "sweep_free_wake", "plane"])
+    ap.add_argument("kind", choices=["trim", "doublet", "sweep_inflow", "sweep_ground", "sweep_free_wake", "plane", "resolution"])
     ap.add_argument("csv")
     ap.add_argument("png")
     ap.add_argument("--reference")
-    ap.add_argument("--also", nargs="+", default=[], help="sweep_ground: more hover sweeps on the same axes")
+    ap.add_argument("--also", nargs="+", default=[], help="sweep_ground: more hover sweeps on the same axes; resolution: inflow sweeps")
+    ap.add_argument("--climb", help="resolution: a climb CSV (N, reach, climb_m_s, lrm_over_momentum_theory, ...)")
     a = ap.parse_args()
     if a.kind == "plane":
         return plot_plane(a.csv, a.png)
@@ -281,6 +341,8 @@ def main():
         plot_doublet(data, a.png)
     elif a.kind == "sweep_ground":
         plot_sweep_ground(data, a.png, [read(c) for c in a.also])
+    elif a.kind == "resolution":
+        plot_resolution(data, a.png, read(a.climb) if a.climb else None, [read(c) for c in a.also])
     elif a.kind == "sweep_free_wake":
         plot_sweep_free_wake(data, a.png, read(a.reference) if a.reference else None)
     else:

@@ -2,12 +2,33 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <numeric>
+#include <string>
+#include <vector>
 
 #include "flow_cases.hpp"
 
 using namespace ship_lrm::lbm;
 using namespace ship_lrm::lbm::test;
+
+namespace {
+// With SHIP_LRM_VALIDATION_OUT set to a folder, a case writes what it compared as NAME.csv there,
+// for scripts/plot_analytic_flows.py (the validation report's plot); otherwise nothing is written.
+void write_case_csv(const std::string& name, const std::string& header, const std::vector<std::vector<double>>& rows) {
+  const char* dir = std::getenv("SHIP_LRM_VALIDATION_OUT");
+  if (!dir || !*dir) return;
+  std::ofstream out(std::string(dir) + "/" + name + ".csv");
+  ASSERT_TRUE(out) << "cannot write " << dir << "/" << name << ".csv";
+  out.precision(9);
+  out << header << "\n";
+  for (const auto& r : rows) {
+    for (std::size_t i = 0; i < r.size(); ++i) out << (i ? "," : "") << r[i];
+    out << "\n";
+  }
+}
+}  // namespace
 
 // 1. Mass conservation: BGK collision and AA streaming conserve mass exactly in exact arithmetic;
 // float32 storage of shifted populations must keep the relative drift below 1e-5 over 10^4 steps.
@@ -71,6 +92,7 @@ TEST(Validation, TaylorGreenViscosityAndSecondOrder) {
   const double order = std::log2(r32.l2_error / r64.l2_error);
   RecordProperty("nu_measured_64", std::to_string(r64.nu_measured));
   RecordProperty("observed_order", std::to_string(order));
+  write_case_csv("taylor_green", "cells_per_wavelength,l2_error,nu_measured,nu", {{32, r32.l2_error, r32.nu_measured, nu}, {64, r64.l2_error, r64.nu_measured, nu}});
   EXPECT_NEAR(r64.nu_measured / nu, 1.0, 0.01);
   EXPECT_GT(order, 1.7);
   EXPECT_LT(order, 2.5);
@@ -89,8 +111,14 @@ TEST(Validation, PoiseuilleForceDriven) {
   const int H = cfg.ny;
   const double peak = F / (2.0 * cfg.collision.nu) * (H / 2.0) * (H / 2.0);
   double err = 0;
-  for (int y = 0; y < H; ++y) err = std::max(err, std::abs(p[y] - F / (2.0 * cfg.collision.nu) * (y + 0.5) * (H - 0.5 - y)));
+  std::vector<std::vector<double>> rows;
+  for (int y = 0; y < H; ++y) {
+    const double exact = F / (2.0 * cfg.collision.nu) * (y + 0.5) * (H - 0.5 - y);
+    err = std::max(err, std::abs(p[y] - exact));
+    rows.push_back({y + 0.5, p[y] / peak, exact / peak});  // y + 1/2: distance from the halfway wall
+  }
   RecordProperty("max_error_over_peak", std::to_string(err / peak));
+  write_case_csv("poiseuille", "y_from_wall,u_over_peak,exact_over_peak", rows);
   EXPECT_LT(err / peak, 0.01);
 }
 
@@ -105,8 +133,13 @@ TEST(Validation, CouetteMovingWall) {
   s->step(20000);
   const auto p = profile_y(s->lattice(), s->fields(), 0, 0, 3);
   double err = 0;
-  for (int y = 0; y < cfg.ny; ++y) err = std::max(err, std::abs(p[y] - U * (y + 0.5) / cfg.ny));
+  std::vector<std::vector<double>> rows;
+  for (int y = 0; y < cfg.ny; ++y) {
+    err = std::max(err, std::abs(p[y] - U * (y + 0.5) / cfg.ny));
+    rows.push_back({y + 0.5, p[y] / U, (y + 0.5) / cfg.ny});
+  }
   RecordProperty("max_error_over_U", std::to_string(err / U));
+  write_case_csv("couette", "y_from_wall,u_over_U,exact_over_U", rows);
   EXPECT_LT(err / U, 0.01);
 }
 
