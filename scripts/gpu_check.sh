@@ -119,7 +119,7 @@ if [ "$full" = 1 ]; then
   step wake_m96 300 "$bench" wake --ship natogd --scale model --N 96 --motion static --wind 9.77 --duration 0.5 --interval 0.05 \
     --backend cuda --no-plot --out "$wake_dir/m96.h5"
   # the collision's stability in a disturbed stream on the device (the same table as the CPU's: the
-  # backends are bit-identical; docs/benchmarks.md, "Stream stability of the collision")
+  # backends are bit-identical; docs/benchmarks.md at 193c1b4, "Stream stability of the collision")
   step stream_stability 300 "$bench" validate stream-stability --backend cuda --mach 0.15,0.225,0.3
   # the recursive regularised collision and the characteristic inlet on the device (2026-12-04)
   step stream_stability_rr 300 "$bench" validate stream-stability --backend cuda --mach 0.3 --collision recursive

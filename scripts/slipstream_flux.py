@@ -15,7 +15,7 @@ What momentum theory says of these (steady, inviscid, uniformly loaded disk): th
 is A v; in the far wake the slipstream has contracted to R_w / R = sqrt((V_c + v) / (V_c + 2 v)) and
 carries an induced velocity of 2 v, so its induced flux is 2 (V_c + v) / (V_c + 2 v) A v (1 in hover)
 and stays so downstream. A flux through a wide disc that keeps growing downstream is air the
-slipstream's shear layer entrains (a viscous or turbulent wake; docs/benchmarks.md, 2026-12-06).
+slipstream's shear layer entrains (a viscous or turbulent wake; docs/benchmarks.md at 193c1b4, 2026-12-06).
 
 The climb rate and v are read from inflow_sweep.csv beside the plane unless both are given (its
 climb_m_s and momentum_theory_m_s columns). The plane must be of axial flight: a mean in-plane velocity

@@ -55,7 +55,7 @@ constexpr int kBlock = 128;
 unsigned blocks(std::size_t n) { return static_cast<unsigned>((n + kBlock - 1) / kBlock); }
 
 // Pass 0 over every cell. (A split that ran the open-boundary passes on a second stream beside the
-// interior was measured slower on the H100: docs/benchmarks.md, 2026-11-24.)
+// interior was measured slower on the H100: docs/benchmarks.md at 193c1b4, 2026-11-24.)
 template <bool kOdd, int kCollision, int kForce>
 __global__ void fluid_kernel(LatticeView v, const std::uint32_t* __restrict__ masks) {
   const std::size_t c = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;

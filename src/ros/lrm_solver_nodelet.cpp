@@ -9,7 +9,7 @@
 // The domain is built and every request served on the nodelet's own thread, from its own callback
 // queue: one thread (and one OpenMP team) for the LBM, and a request handed straight from the
 // publishing thread to it, not through the nodelet manager's dispatcher and worker threads
-// (docs/benchmarks.md, "ROS layer in real time", 2026-12-02).
+// (docs/benchmarks.md at 193c1b4, "ROS layer in real time", 2026-12-02).
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <nodelet/nodelet.h>
 #include <pthread.h>
@@ -304,7 +304,7 @@ class LrmSolverNodelet : public nodelet::Nodelet {
     stat.add("wall cells", fluid_->domain().wall_cells());
     stat.add("ship voxelisations", fluid_->voxelisations());
     stat.add("face refreshes", fluid_->face_refreshes());
-    // where a real-time job's time goes (docs/benchmarks.md, "ROS layer in real time"): its LBM work,
+    // where a real-time job's time goes (docs/benchmarks.md at 193c1b4, "ROS layer in real time"): its LBM work,
     // and its wait between the flight model's request and its handling here
     stat.add("job (ms), p50 of the last 1000", percentile(job_ms_, 0.5));
     stat.add("job (ms), p99 of the last 1000", percentile(job_ms_, 0.99));

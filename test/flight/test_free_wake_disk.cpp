@@ -2,7 +2,7 @@
 // two exact results for such a disk: in axial flow its mean induced velocity is momentum theory's
 // (Froude's theorem holds exactly for a uniform pressure jump), and in fast edgewise flight it is a
 // wing with elliptic span loading, whose mean downwash is T / (2 rho A V) (Prandtl), Glauert's limit.
-// Coarse numerics keep each case to seconds; docs/benchmarks.md has the converged runs.
+// Coarse numerics keep each case to seconds; docs/benchmarks.md at 193c1b4 has the converged runs.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -87,7 +87,7 @@ TEST(StreamStability, PlainBgkNearHalfTauDivergesAtMach03) {
 // viscosity holds it at a few per cent of the stream; the recursive regularised collision damps it
 // (x 0.24), since it sets the ghost moments that BGK leaves undamped near tau = 1/2 to equilibrium.
 // (Over 64 000 steps in a 32^3 box it regrows slowly and saturates at 0.4 % of U, BGK at 2.5 % from
-// step 1 000: docs/benchmarks.md, "The recursive regularised collision".)
+// step 1 000: docs/benchmarks.md at 193c1b4, "The recursive regularised collision".)
 TEST(StreamStability, RecursiveRegularisedCollisionDampsWhatBgkGrowsAtMach03) {
   StreamStabilityCase c = lrm_lattice_case(16);
   const StreamStabilityResult bgk = run_stream_stability(c);

@@ -72,7 +72,7 @@ TEST(Ground, StreamOverGroundMovingWithItStaysUniformWhileTheGroundMoves) {
   // Smagorinsky to act on). At 15 m/s it diverges after ~300 steps; at 5 m/s it reaches 0.9 % after
   // 800 steps. The run here is 5 m/s and 600 steps, so the check covers the wall motion and the
   // refill, not that corner. With a rotor the sweeps no longer diverge, but from ~12 m/s the
-  // mode still covers the ground (docs/benchmarks.md, 2026-11-24).
+  // mode still covers the ground (docs/benchmarks.md at 193c1b4, 2026-11-24).
   lrm::LrmDomain d(quick_config());
   const Vec3 stream(-5.0, 0.0, 0.0);
   const auto ground = add_ground_moving_with(d, stream);
@@ -191,7 +191,7 @@ TEST(Ground, BadSetUpsAreRefusedBeforeAnyStep) {
 TEST(Ground, HoverAtHalfARadiusLiesBetweenCheesemanBennettAndHayden) {
   // ground-effect target, quick variant (N = 32): the thesis' LRM matched the algebraic models for
   // 0.5 < z/R < 0.6 (fig. 8.9); at z/R = 0.5 the ratio must lie between Hayden (0.625) and
-  // Cheeseman-Bennett (0.75). Higher above the ground the LRM still fails (docs/benchmarks.md).
+  // Cheeseman-Bennett (0.75). Higher above the ground the LRM still fails (docs/benchmarks.md at 193c1b4).
   lrm::IsolatedRotorCase c;
   c.settle = 3.0;
   c.average = 1.5;
@@ -214,7 +214,7 @@ TEST(Ground, HoverWithEntrainingFacesStaysBelowOneWhereTheThesisFailed) {
   // ground-effect target, quick variant (N = 32, a = 1.25). The thesis' LRM (fig. 8.9), and this one
   // with the thesis' faces, put v_IGE / v_OGE above 1 from z/R = 0.8 up (N = 32: 1.077 at z/R = 1):
   // the velocity side faces hold still air, a wall for the ground's wall jet, which turns up along
-  // them and comes back into the rotor (docs/benchmarks.md, 2026-12-02). With entraining pressure
+  // them and comes back into the rotor (docs/benchmarks.md at 193c1b4, 2026-12-02). With entraining pressure
   // faces the jet leaves at the ambient pressure and the air drawn in comes from rest; up to z/R = 1
   // the ratio must then rise with height and stay below 1, as both algebraic models do (measured
   // 0.78, 0.83, 0.91 here; N = 64 with 30 s averages: 0.76, 0.93, 0.98). Higher up it is still not

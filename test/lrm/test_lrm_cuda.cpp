@@ -2,7 +2,7 @@
 // faces front and sides, impedance faces back, top and bottom; no bodies), the same frame motion,
 // rotor forces and inflow read-out. The backends share every per-cell function
 // and are compiled without contraction, so the fields must agree to rounding after one step and
-// stay bit-identical in practice (docs/benchmarks.md). Runs where a CUDA device exists
+// stay bit-identical in practice (docs/benchmarks.md at 193c1b4). Runs where a CUDA device exists
 // (scripts/gpu_check.sh), reports itself skipped elsewhere.
 #include <gtest/gtest.h>
 

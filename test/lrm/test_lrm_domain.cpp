@@ -139,7 +139,7 @@ struct LinearFaceGrid {
 // The approach restarts its domain after the first feed of the wake table: every cell must start
 // with the table's air at its place, not with the free stream, so that the outlets start in step with
 // the reference they are given (else the thesis' outlets, which have no reference pressure, keep the
-// start's disturbance: docs/benchmarks.md, "The approach's outlets").
+// start's disturbance: docs/benchmarks.md at 193c1b4, "The approach's outlets").
 TEST(LrmDomain, RestartingWithAFaceGridStartsEveryCellWithTheGridsAir) {
   lrm::LrmDomain d(quick_config());
   d.set_stream(rotor::Vec3(-20, 0, 0));
@@ -229,7 +229,7 @@ double fast_forward_ratio(const lrm::LrmConfig& cfg) {
 // same grid at half the time step (lattice Mach 0.15 instead of 0.3) gives the same inflow. The thesis'
 // outlet (sigma = 0) has no reference pressure; its steady state keeps p' = rho c_s u_n', which makes the
 // faces nearly closed for the rotor's steady disturbance as the lattice Mach number falls (N = 32: 0.853
-// at Mach 0.3, 0.835 at 0.15, 0.821 at 0.075; docs/benchmarks.md).
+// at Mach 0.3, 0.835 at 0.15, 0.821 at 0.075; docs/benchmarks.md at 193c1b4).
 TEST(IsolatedRotor, WithRelaxedOutletsTheFastForwardInflowDoesNotDependOnTheLatticeMachNumber) {
   double ratio[2];
   for (int k = 0; k < 2; ++k) {
@@ -244,7 +244,7 @@ TEST(IsolatedRotor, WithRelaxedOutletsTheFastForwardInflowDoesNotDependOnTheLatt
 }
 
 // The faces of a finite domain act on the rotor like the walls of a wind tunnel: at N = 32, 65 m/s the
-// a = 1.25 domain gives 0.853 of Glauert and the a = 2 one 0.886 (docs/benchmarks.md). With the rotor's
+// a = 1.25 domain gives 0.853 of Glauert and the a = 2 one 0.886 (docs/benchmarks.md at 193c1b4). With the rotor's
 // own far field in the faces' air (LrmConfig::rotor_far_field, a vortex-cylinder wake) the domain size
 // no longer matters: the small domain gives the large one's answer.
 TEST(IsolatedRotor, WithTheRotorsFarFieldAtTheFacesTheDomainSizeDropsOut) {
@@ -264,9 +264,9 @@ TEST(IsolatedRotor, WithTheRotorsFarFieldAtTheFacesTheDomainSizeDropsOut) {
 // In fast edgewise flight (65 m/s, v / V = 0.03) Glauert's formula is exact for the uniformly loaded
 // disk: its chordwise-integrated load is elliptic along the span, so linear theory gives a mean induced
 // velocity of exactly T / (2 rho A V) (Prandtl's elliptic wing; the free-wake disk meets it within
-// 0.6 % at 40 - 50 m/s, docs/benchmarks.md 2026-12-05). With the rotor's far field at the faces the
+// 0.6 % at 40 - 50 m/s, docs/benchmarks.md at 193c1b4 2026-12-05). With the rotor's far field at the faces the
 // LRM approaches it from below as the grid refines: 0.904, 0.935, 0.952, 0.962 and 0.982 at N = 32, 48,
-// 64, 96 and 128 (docs/benchmarks.md, 2026-12-06). Checked at N = 32 and 48: each within the quick
+// 64, 96 and 128 (docs/benchmarks.md at 193c1b4, 2026-12-06). Checked at N = 32 and 48: each within the quick
 // variant's 10 %, and nearer at N = 48.
 TEST(IsolatedRotor, InFastForwardFlightTheInflowConvergesOnGlauertsLimit) {
   double ratio[2];
@@ -361,7 +361,7 @@ TEST(IsolatedRotor, WithAFaceGridTheFarFieldIsThatOfTheGridsAirAtTheHub) {
 // Steady axial flow through a uniformly loaded disk is where momentum theory is exact (Froude's
 // theorem; the free-wake disk meets it within 0.4 %, test_free_wake_disk.cpp). In a climb at V_c =
 // v_h (11.62 m/s, momentum theory 7.185 m/s) the LRM with its rotor's far field converges on it:
-// 0.962 at N = 32, 1.000 at N = 64, 1.009 at N = 96 (docs/benchmarks.md, 2026-12-05). Checked at
+// 0.962 at N = 32, 1.000 at N = 64, 1.009 at N = 96 (docs/benchmarks.md at 193c1b4, 2026-12-05). Checked at
 // N = 32 and 64: within 2 % at N = 64, and nearer than at N = 32.
 TEST(IsolatedRotor, InAnAxialClimbTheInflowConvergesOnMomentumTheory) {
   double ratio[2];

@@ -138,7 +138,7 @@ TEST(ShipInDomain, UniformStreamStaysUniformWithTheHullFillingTheLowerHalf) {
   expect_uniform(3.5, Vector3d(-4.0, 1.0, 0.0), Vector3d::Zero(), 32);
 }
 
-// KNOWN DEFECT (docs/benchmarks.md, "Approach"): the same while the domain also turns (0.03 rad/s):
+// KNOWN DEFECT (docs/benchmarks.md at 193c1b4, "Approach"): the same while the domain also turns (0.03 rad/s):
 // 0.060 m/s at N = 16 and 0.032 m/s at N = 32 (1.5 % and 0.8 % of 4.1 m/s), no longer in the gap but
 // in the fluid at the stern's corner, whose staircase changes as the grid turns past it; the error
 // halves with the cell size (first order) but is above the uniform-stream bound's 0.5 % at these resolutions.

@@ -162,7 +162,7 @@ TEST(ShipApproach, TheRotorsFarFieldFeedsTheTableFacesAndIsRescaledWithTheThrust
 // inside it must keep the table's air (thesis fig. 9.3 (c)). The domain starts from the table's air
 // (LrmDomain::restart_flow): started from the free stream instead, the thesis' outlets, which have no
 // reference pressure, kept that start's disturbance and the centre plane differed from the table by
-// 8 - 13 m/s RMS over the deck of the default table (docs/benchmarks.md, 2026-12-03). Measured here:
+// 8 - 13 m/s RMS over the deck of the default table (docs/benchmarks.md at 193c1b4, 2026-12-03). Measured here:
 // 1.2 m/s (6 % of the wind) from 1 to 1.9 s of the tiny table, hovering 10 m behind the spot.
 TEST(ShipApproach, WithoutTheRotorsForcesTheDomainKeepsTheTablesWake) {
   lrm::ApproachConfig c = config("lrm", 1.9);

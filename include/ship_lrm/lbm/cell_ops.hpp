@@ -35,7 +35,7 @@ struct Macro {
 //   third-order moments the recursion of Malaspinas 2015 gives, the equilibrium carries the
 //   third-order terms D3Q19 supports (Coreixas, Wissocq, Puigt, Boussuge & Sagaut 2017, Phys. Rev. E
 //   96, 033306). Same viscosity as BGK, but a uniform stream near tau = 1/2 stays stable to Mach 0.3,
-//   where BGK's grows (docs/benchmarks.md, "The recursive regularised collision").
+//   where BGK's grows (docs/benchmarks.md at 193c1b4, "The recursive regularised collision").
 enum class CollisionModel : int { Bgk = 0, RecursiveRegularized = 1 };
 
 // Collision parameters in lattice units.

@@ -20,7 +20,7 @@
 // Diagnostics build only (CMake -DSHIP_LRM_TRACE_CELL=x,y,z, as scripts/pack_gpu_binaries.sh with
 // TRACE_CELL=x,y,z: defines SHIP_LRM_TRACE_X, _Y and _Z): pass 1 of the open boundaries prints its
 // inputs and result at that cell on either backend, so that the CUDA backend's state there can be compared with the CPU's line by line
-// (the LRM domain's open defect, docs/benchmarks.md, the H200 figures). Nothing otherwise.
+// (the LRM domain's open defect, docs/benchmarks.md at 193c1b4, the H200 figures). Nothing otherwise.
 #ifdef SHIP_LRM_TRACE_X
 #include <cstdio>
 #ifdef __CUDA_ARCH__
@@ -113,7 +113,7 @@ inline std::size_t population_stride(std::size_t ncells) {
 // or with the field. The mode is a template parameter of the updates, so that whether they read the
 // field is known when they are compiled: a test of the field pointer per cell is control flow that
 // GCC does not vectorise, and made the frame's step (the LRM domain decelerating) 3.7 times slower
-// than the others on the CPU (docs/benchmarks.md, 2026-12-03).
+// than the others on the CPU (docs/benchmarks.md at 193c1b4, 2026-12-03).
 enum ForceMode : int { kNoForce = 0, kUniformForce = 1, kForceField = 2, kFrameForce = 3, kFrameForceField = 4 };
 SHIP_LRM_HD constexpr bool has_force_field(int mode) { return mode == kForceField || mode == kFrameForceField; }
 SHIP_LRM_HD constexpr bool has_frame_force(int mode) { return mode == kFrameForce || mode == kFrameForceField; }

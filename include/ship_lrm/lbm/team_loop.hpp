@@ -9,7 +9,7 @@
 // schedule(dynamic) takes the work over but every chunk goes through one shared counter, whose cache
 // line moves between the cores at each claim: on this VM that made a real-time step 10 - 34 % slower
 // than the static split. This loop made it 11 - 14 % faster, and a simulated-time step (nothing else
-// running) 6 - 20 % faster, the static split's imbalance gone (docs/benchmarks.md, 2026-12-02). A
+// running) 6 - 20 % faster, the static split's imbalance gone (docs/benchmarks.md at 193c1b4, 2026-12-02). A
 // thread touches another's counter only once its own share is done.
 #pragma once
 

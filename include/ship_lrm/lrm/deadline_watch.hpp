@@ -1,5 +1,5 @@
 // Tells a real-time run's user when the machine cannot keep the LRM's deadlines (real-time
-// target; docs/benchmarks.md, "A slower VM"). A paced run whose LRM is too slow does not fail:
+// target; docs/benchmarks.md at 193c1b4, "A slower VM"). A paced run whose LRM is too slow does not fail:
 // each late step flies on Pitt-Peters (RealTimeInflow), and the loads look plausible. On a 2-core VM
 // that ran the N = 32 step at half the usual speed, 81 - 99.8 % of the steps did so, which the
 // diagnostics counted but nothing said aloud. The watch looks at windows of simulated time and

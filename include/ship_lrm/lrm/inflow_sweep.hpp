@@ -34,7 +34,7 @@ struct IsolatedRotorCase {
 // ground effect: twice the thesis' 30 m/s. At 30 m/s the corner where the inflow face meets the
 // ground, which moves at the stream's speed, seeds a grid-scale mode that the BGK bulk, near its
 // stability limit at the LRM's relaxation time, carries along the ground, and v_IGE / v_OGE jumps
-// about with height (N = 32 and 64; docs/benchmarks.md, "Stream stability of the collision and the
+// about with height (N = 32 and 64; docs/benchmarks.md at 193c1b4, "Stream stability of the collision and the
 // ground corner's mode").
 constexpr double kForwardGroundLatticeVelocity = 60.0;
 

@@ -20,7 +20,7 @@
 //   slowed by the machine still makes it, at the price of an inflow kPipelineDepth LBM intervals
 //   older (13.2 ms at N = 32, against the rotor's inflow time constant of the order of 0.1 s; a missed
 //   job's Pitt-Peters steps moved the approach's loads further from the simulated-time run than the
-//   third interval's lag: docs/benchmarks.md). A job late at its due step is dropped;
+//   third interval's lag: docs/benchmarks.md at 193c1b4). A job late at its due step is dropped;
 //   Pitt-Peters serves until the next job makes its deadline. A busy LRM thread defers the next post.
 // Simulated-time runs (deterministic) use LrmInflow or LinkedInflow directly; this class is for paced runs.
 #pragma once
@@ -54,7 +54,7 @@ enum class RealTimeMode { LockStep, Pipelined };
 // 22: over ROS, alternating with 3 in five back-to-back pairs, fewer misses in four and half as many
 // in sum (a wall change with its flow restart still takes 3 - 4 ms, and this VM's pace varies by 2x
 // from minute to minute), for an inflow 13.2 ms old at N = 32 instead of 9.9 ms, which left C_T's
-// distance to the simulated-time run unchanged (docs/benchmarks.md, "ROS layer in real time", 2026-12-02).
+// distance to the simulated-time run unchanged (docs/benchmarks.md at 193c1b4, "ROS layer in real time", 2026-12-02).
 constexpr int kPipelineDepth = 4;
 
 // LBM steps one job of a real-time LRM may run (LrmInflow::set_catch_up_limit): a job that covers more

@@ -5,7 +5,7 @@
 // The answers arrive on the link's own callback queue, which exchange() serves in the calling
 // thread while it waits: a message handed straight from the publishing thread to the waiting one,
 // not through the nodelet manager's dispatcher and worker threads (two thread wake-ups fewer per LBM
-// step; docs/benchmarks.md, "ROS layer in real time", 2026-12-02).
+// step; docs/benchmarks.md at 193c1b4, "ROS layer in real time", 2026-12-02).
 #pragma once
 #include <ros/callback_queue.h>
 #include <ros/ros.h>

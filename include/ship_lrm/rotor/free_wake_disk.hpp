@@ -17,7 +17,7 @@
 // thrust, no blades, no viscosity) in level flight and climbs, in particular in the transition regime
 // (edgewise speed comparable with v_h) where Glauert's formula is a hypothesis, not a result. There
 // the wake rolls up and the answer still falls with each refinement of step and core at the
-// resolutions reached on a 2-core CPU (docs/benchmarks.md, 2026-12-05): read it with its resolution.
+// resolutions reached on a 2-core CPU (docs/benchmarks.md at 193c1b4, 2026-12-05): read it with its resolution.
 // Exact references it meets (test/flight/test_free_wake_disk.cpp): in axial flow the mean induced
 // velocity of a uniformly loaded disk is momentum theory's (Froude: the disk's mean velocity is the
 // mean of the far upstream and far wake velocities, exact for uniform loading); in fast edgewise flight
