@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The CPU benchmark set behind the CPU table of docs/benchmarks.md: the LBM step (periodic boxes,
 # against the memory bandwidth measured in the same run), the flight model, the coupled step at
-# N = 32 and N = 64 (t_clock / t_sim, thesis 8.3.1), real-time pacing at N = 32 (lock-step and pipelined), and the face feed
-# from the default wake table. Each benchmark is run REPEAT times (default 3), so the table can
+# N = 32 and N = 64 (t_clock / t_sim, thesis 8.3.1), real-time pacing at N = 32 (lock-step and
+# pipelined), and the face feed from the default wake table. Each benchmark is run REPEAT times (default 3), so the table can
 # give a range: these are shared machines.
 # Usage: scripts/bench_cpu.sh [OUT_DIR]   (default build/bench_cpu); one JSON object per line in
 # OUT_DIR/bench.jsonl, each tagged with its command, plus machine.txt (CPU, threads, commit, date).
@@ -35,7 +35,7 @@ run() {
 }
 
 ship_lrm wake --preset default > /dev/null # the default table, cached after the first use
-table=$(ls -t "${XDG_CACHE_HOME:-$HOME/.cache}"/ship_lrm/wake_default_v*.h5 | head -1)
+table=$(ls -t "$HOME"/.cache/ship_lrm/wake_default_v*.h5 | head -1) # where `ship_lrm wake --preset default` caches it
 
 run bench lbm --backend cpu --size 128 --json
 run bench lbm --backend cpu --size 80 --json

@@ -168,19 +168,25 @@ def plot_sweep_free_wake(data, out, lrm):
     finish_speed_panels(fig, axes, f"Uniformly loaded actuator disk, zero incidence{climb_note(data)}; v_h = {vh:.2f} m/s", out)
 
 
-def rows_of(data):
+def rows_of(data, needed, path):
+    """The rows of a CSV read by read() as dicts; stops with a message if a needed column is missing."""
+    missing = [k for k in needed if k not in data]
+    if missing:
+        sys.exit(f"plot_flight.py: {path} has no column {', '.join(missing)}")
     keys = [k for k in data if k != "_text"]
     return [dict(zip(keys, vals)) for vals in zip(*(data[k] for k in keys))]
 
 
 def plot_resolution(data, out, climb, sweeps):
     """mean inflow / exact reference over N (a = 1.25, rotor far field, default lattice velocity)."""
+    rows = rows_of(data, ("speed_m_s", "N", "reach", "lattice_velocity_m_s", "mean_over_glauert", "spacing_R", "ring_points"),
+                   "the resolution CSV")
     series = {}  # speed -> {N: ratio}
-    for r in rows_of(data):
-        if r.get("reach") == 1.25 and r.get("lattice_velocity_m_s") == max(30.0, r["speed_m_s"]):
+    for r in rows:
+        if r["reach"] == 1.25 and r["lattice_velocity_m_s"] == max(30.0, r["speed_m_s"]):
             series.setdefault(r["speed_m_s"], {})[int(r["N"])] = r["mean_over_glauert"]
     for s in sweeps:
-        for r in rows_of(s):
+        for r in rows_of(s, ("speed_m_s", "N", "reach", "lrm_mean_m_s", "momentum_theory_m_s"), "an --also CSV"):
             if r["reach"] == 1.25 and r["speed_m_s"] > 0:
                 series.setdefault(r["speed_m_s"], {}).setdefault(int(r["N"]), r["lrm_mean_m_s"] / r["momentum_theory_m_s"])
     fig, axes = plt.subplots(1, 2 if climb else 1, figsize=(12 if climb else 7, 4.5), squeeze=False)
@@ -188,7 +194,7 @@ def plot_resolution(data, out, climb, sweeps):
     for v in sorted(series):
         ns = sorted(series[v])
         line, = ax.plot(ns, [series[v][n] for n in ns], "o-", label=f"LRM, {v:g} m/s")
-        free = [r for r in rows_of(data) if r["speed_m_s"] == v and r["ring_points"] > 0]
+        free = [r for r in rows if r["speed_m_s"] == v and r["ring_points"] > 0]
         if free:
             finest = min(free, key=lambda r: (r["spacing_R"], -r["ring_points"]))
             ax.axhline(finest["mean_over_glauert"], color=line.get_color(), ls="--", lw=1,
@@ -199,7 +205,8 @@ def plot_resolution(data, out, climb, sweeps):
     if climb:
         ax2 = axes[0][1]
         for vc, name in ((11.62, "axial climb V_c = v_h"), (0.0, "hover")):
-            pts = sorted((int(r["N"]), r["lrm_over_momentum_theory"]) for r in rows_of(climb)
+            pts = sorted((int(r["N"]), r["lrm_over_momentum_theory"]) for r in rows_of(climb, ("N", "reach", "climb_m_s", "rotor_far_field", "smagorinsky",
+                                                                  "lattice_velocity_m_s", "lrm_over_momentum_theory"), "the --climb CSV")
                          if r["reach"] == 1.25 and r["climb_m_s"] == vc and r["rotor_far_field"] == 1
                          and r["smagorinsky"] == 0.05 and r["lattice_velocity_m_s"] == 30)
             best = {}

@@ -24,8 +24,11 @@ def read_vti(path):
     if start < 0 or b'encoding="raw"' not in data[start:start + 100] or b'header_type="UInt64"' not in data[:400]:
         sys.exit(f"plot_vti.py: {path} is not a raw-appended VTK image file as ship_lrm writes them")
     head = data[:start].decode("ascii", "replace")
-    extent = [int(v) for v in re.search(r'WholeExtent="([^"]+)"', head).group(1).split()]
-    spacing = [float(v) for v in re.search(r'Spacing="([^"]+)"', head).group(1).split()]
+    extent_m, spacing_m = re.search(r'WholeExtent="([^"]+)"', head), re.search(r'Spacing="([^"]+)"', head)
+    if not extent_m or not spacing_m:
+        sys.exit(f"plot_vti.py: {path} has no WholeExtent or Spacing")
+    extent = [int(v) for v in extent_m.group(1).split()]
+    spacing = [float(v) for v in spacing_m.group(1).split()]
     dims = [extent[1] - extent[0] + 1, extent[3] - extent[2] + 1, extent[5] - extent[4] + 1]
     base = data.index(b"_", start) + 1
     arrays = {}
