@@ -85,8 +85,8 @@ lbm::WallMotion LrmDomain::lattice_motion(const WallSurface& wall) const {
   const RigidMotion& m = wall.motion();
   lbm::WallMotion w;
   // The bodies kept clear of the faces drain, through their clipped faces, what the faces feed into
-  // the held air in front of them: Ladd's rho_w must be the fluid's density there (design.md, "The
-  // air inside a ship where no wall may stand"). The others keep the reference density.
+  // the held air in front of them: Ladd's rho_w must be the fluid's density there (design.md, "Ladd's
+  // wall density"). The others keep the reference density.
   w.local_density = wall.clear_of_faces() ? 1.0f : 0.0f;
   for (int d = 0; d < 3; ++d) {
     w.v[d] = static_cast<float>(m.velocity[d] * units_.dt() / units_.dx());

@@ -52,7 +52,7 @@ std::function<int()> add_wake_command(CLI::App& app) {
       ->check(CLI::IsMember({"bgk", "recursive"}));
   cmd->add_flag("--reflecting-inlet{false}", opt->domain.characteristic_inlet,
                 "the thesis' velocity inlet, which reflects the waves from the ship (default: a characteristic inlet that lets them "
-                "leave; with the reflecting one a disturbed stream grows, docs/design.md \"The noisy inlet\")");
+                "leave; with the reflecting one a disturbed stream grows, docs/design.md \"A characteristic inlet\")");
   cmd->add_flag("--no-slip-sea", opt->domain.no_slip_sea, "no-slip sea surface (the thesis) instead of slip");
   cmd->add_option("--out", opt->out, "wake table FILE.h5 (FILE.xdmf, FILE_centre_plane.csv/.png beside it)");
   cmd->add_option("--checkpoint-every", opt->checkpoint_seconds, "wall-clock seconds between checkpoints (FILE.h5.ckpt)")
@@ -83,7 +83,7 @@ std::function<int()> add_wake_command(CLI::App& app) {
     if (o.out.empty()) throw CLI::ValidationError("--out", "give the table file (FILE.h5)");
     o.domain.collision = lbm::parse_collision_model(*collision);
     // The flow over the superstructure reaches 1.11 times the wind; a faster lattice wind costs accuracy
-    // (compressibility) and, with BGK, stability (docs/design.md, "The noisy inlet"; benchmarks, 2026-12-04)
+    // (compressibility) and, with BGK, stability (docs/design.md, "A characteristic inlet"; benchmarks, 2026-12-04)
     if (const double mach = 1.15 * o.domain.lattice_wind * std::sqrt(3.0); mach > 0.15)
       std::fprintf(stderr,
                    "ship_lrm: warning: --lattice-wind %g puts the flow over the ship at lattice Mach %.2f: the mean flow moves by about "

@@ -2,12 +2,16 @@
 """Checks the documentation as a product (run by ctest as Docs.Check):
 
 1. no tracked file (contents or path) carries development-log numbering: the words session, issue or
-   acceptance followed by a number;
+   acceptance followed by a number, also where a line break (and a comment marker) falls between;
 2. README.md has at most 150 lines;
 3. every relative link in README.md and docs/ resolves to a file of the repository, and a link's
    #anchor to a heading of the linked Markdown page (GitHub's heading slugs);
 4. every repository path cited in backticks in README.md and docs/ exists, and no Markdown file is
-   named that the repository does not hold.
+   named that the repository does not hold;
+5. every section a tracked file cites by name in a page of docs/ (`docs/design.md, "Slip edges"`,
+   also across a comment's line break) is a heading of that page, or the start of one. A citation
+   of a page at a commit (`docs/benchmarks.md at 193c1b4, "..."`) names the page as it was then
+   and is not checked.
 
 Usage: check_docs.py REPOSITORY_ROOT. Exits 1 and lists every finding when one check fails.
 """
@@ -18,6 +22,9 @@ import sys
 
 # Built from parts so that this file does not match itself.
 NUMBERING = re.compile(r"\b(" + "sess" + "ions?|" + "iss" + "ues?|" + "accept" + r"ances?)[ _-]?#?[0-9]", re.I)
+CONTINUATION = re.compile(r"^\s*(//+|#+|\*+|--|;+|%+|>+)?\s*")
+FLATTEN = re.compile(r"\n[ \t]*(?://+|#+|\*+|--|;+|%+|>+)?[ \t]*")
+SECTION = re.compile(r'(?<![\w/.-])((?:docs/)?(?:reference/)?[\w]+\.md)(?: at [0-9a-f]{7,40})?[,:]?[ \t]+\\?"([^"\\\n]{2,100})\\?"')
 LINK = re.compile(r"\[[^\]]*\]\(([^)\s]+)\)")
 MD_NAME = re.compile(r"(?<![\w./:-])([\w./-]+\.md)\b")
 CODE = re.compile(r"`([^`\n]+)`")
@@ -59,6 +66,21 @@ def anchors(path):
     return result
 
 
+def normal(text):
+    return re.sub(r"\s+", " ", re.sub(r"[`*]", "", text)).strip().lower()
+
+
+def heading_texts(path):
+    result = []
+    in_code = False
+    for line in open(path, encoding="utf-8"):
+        if line.startswith("```"):
+            in_code = not in_code
+        elif not in_code and line.startswith("#"):
+            result.append(normal(line.lstrip("#")))
+    return result
+
+
 def doc_pages(files):
     return [f for f in files if f == "README.md" or f == "CHANGELOG.md" or (f.startswith("docs/") and f.endswith(".md"))]
 
@@ -88,8 +110,13 @@ def main():
             text = open(full, encoding="utf-8").read()
         except UnicodeDecodeError:
             continue
-        for n, line in enumerate(text.split("\n"), 1):
+        lines = text.split("\n")
+        for n, line in enumerate(lines, 1):
             m = NUMBERING.search(line)
+            if not m and n < len(lines):
+                # the word at a line's end and its number on the next, after the comment marker
+                joined = line.rstrip() + " " + CONTINUATION.sub("", lines[n])
+                m = NUMBERING.search(joined, max(0, len(line.rstrip()) - 12))
             if m:
                 problems.append(f"{f}:{n}: development-log numbering '{m.group(0)}'")
 
@@ -124,6 +151,33 @@ def main():
                 cands = {os.path.normpath(os.path.join(base, word)), word, "docs/" + word}
                 if not cands & present:
                     problems.append(f"{page}:{n}: cited file {word} is not in the repository")
+
+    headings = {}
+    for f in files:
+        full = os.path.join(root, f)
+        if not os.path.isfile(full) or f.startswith("docs/results/"):
+            continue
+        try:
+            text = open(full, encoding="utf-8").read()
+        except UnicodeDecodeError:
+            continue
+        if ".md" not in text:
+            continue
+        flat = FLATTEN.sub(" ", text)
+        for m in SECTION.finditer(flat):
+            if " at " in m.group(0).split('"')[0]:
+                continue
+            name = m.group(1)
+            page = next((c for c in (name, "docs/" + name, os.path.normpath(os.path.join(os.path.dirname(f), name)))
+                         if c in present and c.startswith("docs/")), None)
+            if page is None:
+                continue
+            if page not in headings:
+                headings[page] = heading_texts(os.path.join(root, page))
+            cited = normal(m.group(2))
+            if not any(h.startswith(cited) for h in headings[page]):
+                line = flat.count("\n", 0, m.start()) + 1
+                problems.append(f"{f}: cites {name}, \"{m.group(2)}\", which is no heading there (near line {line})")
 
     for p in problems:
         print(p)

@@ -1,5 +1,5 @@
-// The LRM domain moving with the rotorcraft (uniform-stream bound; docs/design.md, "Moving the
-// domain"): the grid is fixed to the rotorcraft, the faces get the air velocity relative to it and
+// The LRM domain moving with the rotorcraft (uniform-stream bound; docs/design.md, "The domain
+// moves with the rotorcraft"): the grid is fixed to the rotorcraft, the faces get the air velocity relative to it and
 // every cell the frame's fictitious forces (Landau & Lifshitz, Mechanics, eq. 39.7).
 #include <gtest/gtest.h>
 

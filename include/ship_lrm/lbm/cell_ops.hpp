@@ -151,7 +151,7 @@ SHIP_LRM_HD Macro macro_from_populations(const float g[Q], const float force[3])
 }
 
 // Fictitious forces of a non-inertial frame (the LRM domain fixed to the rotorcraft; docs/design.md
-// "Moving the domain"). Per unit mass, with r from the frame's reference point (Landau & Lifshitz,
+// "The domain moves with the rotorcraft"). Per unit mass, with r from the frame's reference point (Landau & Lifshitz,
 // Mechanics, 3rd ed., section 39, eq. 39.7):
 //   a = -a_O - dOmega/dt x r - Omega x (Omega x r) - 2 Omega x u.
 // The terms without u are affine in the cell position p: a(p) = accel + gradient p (gradient row-major),

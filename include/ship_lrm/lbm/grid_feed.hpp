@@ -2,14 +2,14 @@
 // table feeding the LRM's faces (thesis 5.2, 6.3). Written once for the host and the device
 // (hd.hpp): WakeTable::sample and LrmDomain's host path call these functions, and so does the CUDA
 // backend's feed kernel, which computes the face values where the faces live, so that only the pose
-// crosses the bus per refresh (docs/design.md, "Feeding the LRM").
+// crosses the bus per refresh (docs/design.md, "Feeding the LRM from a wake table").
 //
 // The field: two time frames of a window of a regular grid (spacing h, grid point (0, 0, 0) at
 // `origin`), interpolated trilinearly in space and linearly in time; outside the grid the free stream.
 // The domain: cell (i, j, k) sits at r = ((i, j, k) - centre) dx from the hub, in the domain's axes;
 // in the grid's frame at hub + R r. The air relative to the hub in the domain's axes is
 // R^T (u(hub + R r) - hub_velocity), and a face of a domain turning at omega imposes
-// (air - omega x r) in lattice units (the rotating-frame velocity; design.md, "Moving domain").
+// (air - omega x r) in lattice units (the rotating-frame velocity; design.md, "The domain moves with the rotorcraft").
 #pragma once
 #include <cstddef>
 #include <cstdint>

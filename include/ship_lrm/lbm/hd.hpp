@@ -1,5 +1,5 @@
 // Host/device annotation shared by the CPU (OpenMP) and CUDA backends, so every per-cell
-// formula is written exactly once (docs/design.md, "LBM core").
+// formula is written exactly once (docs/design.md, "One source of physics").
 #pragma once
 
 #if defined(__CUDACC__)

@@ -62,7 +62,7 @@ struct FaceCondition {
   // sense of Israeli & Orszag (1981, J. Comput. Phys. 41, 115; for LBM Xu & Sagaut 2013, J. Comput.
   // Phys. 245, 14) that relaxes the velocity towards the inflow rather than raising the viscosity, so
   // the air the face feeds in is the target, not damped towards a mean. It removes the grid-scale
-  // mode where the inlet meets a moving ground (docs/design.md, "ground corner"). Cost: the layer's
+  // mode where the inlet meets a moving ground (docs/design.md, "The ground corner's mode"). Cost: the layer's
   // cells only, in a pass after the step (like the held cells').
   int absorbing_cells = 0;
   float absorbing_strength = 0.0f;  // per step, in (0, 1]

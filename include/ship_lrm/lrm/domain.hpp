@@ -6,7 +6,7 @@
 // cell layer; the inflow is read back as mean + linear harmonics (rotor/disk_coupling.hpp), in m/s
 // relative to the domain: the rotor-inflow interface of inflow_model.hpp.
 //
-// Domain motion (docs/design.md, "LRM domain"): the grid stays fixed to the rotorcraft, so
+// Domain motion (docs/design.md, "The domain moves with the rotorcraft"): the grid stays fixed to the rotorcraft, so
 // it translates and rotates with it. The faces get the air velocity relative to the moving grid,
 // air - omega x r, and every cell gets the frame's fictitious forces (lbm::add_frame_force). The
 // thesis' alternative was an ALE domain that interpolates the populations each step. That is

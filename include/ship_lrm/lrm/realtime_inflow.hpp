@@ -48,10 +48,10 @@ struct RealTimeStats {
 
 enum class RealTimeMode { LockStep, Pipelined };
 
-// LBM intervals a pipelined job has between posting and its due step (see above). 3 since session
-// 19: with 2 the approach on 2 CPU cores missed 2 - 4 % of its deadlines, nearly all while the ship's
-// wall cells changed (about 4 ms per change, on top of a 2 ms step, within 6.6 ms). 4 since session
-// 22: over ROS, alternating with 3 in five back-to-back pairs, fewer misses in four and half as many
+// LBM intervals a pipelined job has between posting and its due step (see above). 3 since
+// 2026-12-01: with 2 the approach on 2 CPU cores missed 2 - 4 % of its deadlines, nearly all while the ship's
+// wall cells changed (about 4 ms per change, on top of a 2 ms step, within 6.6 ms). 4 since
+// 2026-12-02: over ROS, alternating with 3 in five back-to-back pairs, fewer misses in four and half as many
 // in sum (a wall change with its flow restart still takes 3 - 4 ms, and this VM's pace varies by 2x
 // from minute to minute), for an inflow 13.2 ms old at N = 32 instead of 9.9 ms, which left C_T's
 // distance to the simulated-time run unchanged (docs/benchmarks.md at 193c1b4, "ROS layer in real time", 2026-12-02).

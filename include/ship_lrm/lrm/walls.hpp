@@ -1,5 +1,5 @@
-// Solid bodies in the LRM domain, described by signed distance (docs/design.md, "Moving the
-// domain"): the ground or a ship deck, which move relative to the domain, and the fuselage, which is
+// Solid bodies in the LRM domain, described by signed distance (docs/design.md, "Walls in
+// the domain"): the ground or a ship deck, which move relative to the domain, and the fuselage, which is
 // fixed to it. The domain voxelises them: a cell whose centre lies inside (distance < 0) becomes a
 // no-slip wall with halfway bounce-back (Ladd 1994), moving with the body's rigid motion.
 #pragma once

@@ -30,7 +30,7 @@ struct WakeConfig {
   // The wind in lattice units: Mach 0.078, the thesis' full-scale value (0.3 c_s at 80 m/s). BGK +
   // Smagorinsky at the wake's tau is unstable from Mach 0.15 - 0.16 (`ship_lrm validate
   // stream-stability`); at 0.1 (Mach 0.17, the default until 2026-12-04) the ship seeded a growing
-  // noise at the inlet (docs/design.md, "The noisy inlet").
+  // noise at the inlet (docs/design.md, "A characteristic inlet").
   double lattice_wind = 0.045;
   double viscosity = 1.46072e-4;  // m^2/s (thesis tables 6.2, 6.3)
   double density = 1.1934;        // kg/m^3 (1.225 for the model, table 6.2)
@@ -39,7 +39,7 @@ struct WakeConfig {
   lbm::CollisionModel collision = lbm::CollisionModel::Bgk;
   // The wind's face as a characteristic inlet (lbm::FaceCondition::characteristic_inlet): waves from
   // the ship leave through it instead of being reflected. The thesis' reflecting inlet with the outlet
-  // opposite lets a disturbed stream grow (docs/design.md, "The noisy inlet", 2026-12-04).
+  // opposite lets a disturbed stream grow (docs/design.md, "A characteristic inlet", 2026-12-04).
   bool characteristic_inlet = true;
   lbm::Backend backend = lbm::Backend::Auto;
   // domain, in ship lengths (thesis 6.2)
