@@ -86,6 +86,8 @@ class CpuSolver final : public Solver {
       for (std::size_t c = 0; c < n; ++c) out[i * n + c] = load_pop(pop(view_, i, c));
     return out;
   }
+  std::vector<float> do_cell_state() override { return aux_; }
+  void do_set_cell_state(const std::vector<float>& a) override { std::copy(a.begin(), a.end(), aux_.begin()); }
 
  protected:
   void sync_view() override {

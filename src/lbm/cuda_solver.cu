@@ -175,7 +175,7 @@ __global__ void init_boundary_kernel(LatticeView v) {
 }
 
 // The velocity faces from a gridded field (grid_feed.hpp): the same per-cell functions as LrmDomain's
-// host path. Velocity inlets take the face velocity, impedance outlets take it as their reference and
+// host path and Solver::feed_faces_from_grid's. Velocity inlets take the face velocity, impedance outlets take it as their reference and
 // its normal change (Solver::set_boundary_values). The largest face speed goes to *fastest (the bits
 // of a non-negative float order as the float). values: the view's boundary values, writable.
 __global__ void grid_feed_kernel(LatticeView v, float* values, GridFeed f, GridWindowView w0, GridWindowView w1, unsigned* fastest) {
@@ -186,16 +186,9 @@ __global__ void grid_feed_kernel(LatticeView v, float* values, GridFeed f, GridW
   if (t != CellType::VelocityInlet && t != CellType::ImpedanceOutlet) return;
   int x, y, z;
   cell_coords(v, c, x, y, z);
-  double r[3], air[3], u[3];
-  feed_cell_position(f, x, y, z, r);
-  grid_air(f, w0, w1, r, air);
-  face_lattice_velocity(air, f.omega, r, f.to_lattice, u);
-  float nu[3];
-  for (int a = 0; a < 3; ++a) nu[a] = static_cast<float>(u[a]);
   float* value = values + 4 * b;
-  if (t == CellType::ImpedanceOutlet) value[3] = impedance_reference_shift(value[3], v.bnd_normal[b], value, nu);
-  for (int a = 0; a < 3; ++a) value[a] = nu[a];
-  const float speed = sqrtf(nu[0] * nu[0] + nu[1] * nu[1] + nu[2] * nu[2]);
+  feed_boundary_cell(f, w0, w1, t == CellType::ImpedanceOutlet, v.bnd_normal[b], x, y, z, value);
+  const float speed = sqrtf(value[0] * value[0] + value[1] * value[1] + value[2] * value[2]);
   atomicMax(fastest, isfinite(speed) ? __float_as_uint(speed) : 0x7f800000u);
 }
 
@@ -401,6 +394,12 @@ class CudaSolver final : public Solver {
       for (std::size_t c = 0; c < n; ++c) h[i * view_.pstride + c] = store_pop(g[i * n + c]);
     g_.upload(h);
   }
+  std::vector<float> do_cell_state() override {
+    std::vector<float> h;
+    if (aux_.size()) aux_.download(h);
+    return h;
+  }
+  void do_set_cell_state(const std::vector<float>& a) override { aux_.upload(a); }
   std::vector<float> populations() override {
     std::vector<pop_t> h;
     g_.download(h);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "ship_lrm/lbm/cell_ops.hpp"
@@ -102,6 +103,42 @@ void Solver::feed_from_grid(const GridWindowView& w0, std::uint64_t serial0, con
   reference_change_pending_ = true;  // the impedance outlets follow the change in the next step
 }
 
+void Solver::feed_faces_from_grid(const GridWindowView& w0, std::uint64_t serial0, const GridWindowView& w1, std::uint64_t serial1,
+                                  const GridFeed& feed) {
+  if (feeds_from_grid()) {
+    feed_from_grid(w0, serial0, w1, serial1, feed);
+    return;
+  }
+  pull_boundary_values();
+  const auto& cells = lattice_.boundary_cells();
+  const auto& normals = lattice_.boundary_normals();
+  const auto& types = lattice_.types();
+  const int nx = lattice_.nx(), ny = lattice_.ny();
+  std::vector<float> next = boundary_values_;
+  float fastest = 0.0f;
+  bool impedance_fed = false;
+  const long n = static_cast<long>(cells.size());
+#pragma omp parallel for reduction(max : fastest) reduction(|| : impedance_fed)
+  for (long b = 0; b < n; ++b) {
+    const auto t = static_cast<CellType>(types[cells[b]] & ~kGeneralBit);
+    if (t != CellType::VelocityInlet && t != CellType::ImpedanceOutlet) continue;
+    const std::uint32_t c = cells[b];
+    const int x = static_cast<int>(c % nx), y = static_cast<int>((c / nx) % ny),
+              z = static_cast<int>(c / (static_cast<std::uint32_t>(nx) * ny));
+    float* value = &next[4 * b];
+    feed_boundary_cell(feed, w0, w1, t == CellType::ImpedanceOutlet, normals[b], x, y, z, value);
+    const float speed = std::sqrt(value[0] * value[0] + value[1] * value[1] + value[2] * value[2]);
+    fastest = std::isfinite(speed) ? std::max(fastest, speed) : std::numeric_limits<float>::infinity();
+    impedance_fed = impedance_fed || t == CellType::ImpedanceOutlet;
+  }
+  if (!(fastest <= max_setup_speed()))
+    throw ConfigError("feed_faces_from_grid: a fed face would reach lattice speed " + std::to_string(fastest) + ", beyond the Mach limit " +
+                      std::to_string(kMaxSetupMach) + " c_s");
+  boundary_values_ = std::move(next);
+  reference_change_pending_ = reference_change_pending_ || impedance_fed;
+  do_set_boundary_values(boundary_values_);
+}
+
 void Solver::set_boundary_values(const std::vector<float>& values) {
   if (values.size() != boundary_values_.size()) throw ConfigError("set_boundary_values: expected 4 values per open-boundary cell");
   for (float v : values)
@@ -168,6 +205,28 @@ void Solver::restore(long steps, const std::vector<float>& g) {
   if (reference_change_pending_) clear_reference_change();
   do_set_populations(g);
   steps_ = steps;
+}
+
+Solver::OpenBoundaryState Solver::open_boundary_state() {
+  OpenBoundaryState s;
+  s.cell_state = do_cell_state();
+  s.values = boundary_values();
+  return s;
+}
+
+void Solver::restore_open_boundary_state(const OpenBoundaryState& s) {
+  const std::size_t cells = lattice_.boundary_cells().empty() ? 0 : 4 * lattice_.cells();
+  if (s.cell_state.size() != cells || s.values.size() != boundary_values_.size())
+    throw ConfigError("restore_open_boundary_state: the state is not this lattice's (" + std::to_string(s.cell_state.size()) +
+                      " cell values, expected " + std::to_string(cells) + "; " + std::to_string(s.values.size()) +
+                      " boundary values, expected " + std::to_string(boundary_values_.size()) + ")");
+  for (const auto* v : {&s.cell_state, &s.values})
+    for (float x : *v)
+      if (!std::isfinite(x)) throw ConfigError("restore_open_boundary_state: a value is not finite");
+  pull_boundary_values();
+  boundary_values_ = s.values;
+  do_set_boundary_values(boundary_values_);
+  if (cells) do_set_cell_state(s.cell_state);
 }
 
 void Solver::step(long n) {

@@ -6,23 +6,12 @@
 #include <limits>
 
 #include "ship_lrm/lbm/refill.hpp"
+#include "ship_lrm/wake/ship_voxels.hpp"
 
 namespace ship_lrm::wake {
 namespace {
 
-constexpr std::uint8_t kFluid = 0, kSea = 1, kShip = 2;
-
-std::array<Vec3, 8> mesh_box(const ShipGeometry& ship) {
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const auto& t : ship.mesh())
-    for (const auto& v : t.v) {
-      lo = lo.cwiseMin(v);
-      hi = hi.cwiseMax(v);
-    }
-  std::array<Vec3, 8> c;
-  for (int k = 0; k < 8; ++k) c[k] = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
-  return c;
-}
+constexpr std::uint8_t kFluid = kFluidNode, kSea = kSeaNode, kShip = kShipNode;
 
 }  // namespace
 
@@ -45,6 +34,8 @@ ShipWakeDomain::ShipWakeDomain(const WakeConfig& cfg, std::shared_ptr<const Ship
     : cfg_(cfg), ship_(std::move(ship)), motion_(std::move(motion)), units_(wake_units(cfg, ship_ ? ship_->datum().length : 0.0)) {
   if (!ship_ || !motion_) throw lbm::ConfigError("wake: no ship or no motion");
   if (!(cfg.smagorinsky >= 0)) throw lbm::ConfigError("wake: the Smagorinsky constant must be >= 0");
+  if (cfg.fine.ratio < 0)
+    throw lbm::ConfigError("wake: the fine region's ratio must be >= 0 (0: none), got " + std::to_string(cfg.fine.ratio));
   const double N = cfg.cells_per_length, l = ship_->datum().length;
   nx_ = static_cast<int>(std::lround(cfg.domain_length * N));
   ny_ = 2 * static_cast<int>(std::lround(0.5 * cfg.domain_width * N)) + 1;  // odd: a row of nodes on the midline
@@ -55,7 +46,7 @@ ShipWakeDomain::ShipWakeDomain(const WakeConfig& cfg, std::shared_ptr<const Ship
   const Vec3 stem_domain(cfg.stem_position * l, 0.5 * ny_ * dx, (cfg.domain_height - cfg.sea_depth) * l);
   const Vec3 stem_ship(ship_->datum().stem_x, 0.0, ship_->datum().waterline);
   origin_ = stem_ship - stem_domain + Vec3::Constant(0.5 * dx);
-  hull_box_ = mesh_box(*ship_);
+  hull_box_ = hull_box(*ship_);
   // the hull must stay clear of the faces
   for (const Vec3& c : hull_box_) {
     const Vec3 g = (motion_->position(c, 0.0) - origin_) / dx;
@@ -65,48 +56,65 @@ ShipWakeDomain::ShipWakeDomain(const WakeConfig& cfg, std::shared_ptr<const Ship
                           std::to_string(nx_) + " x " + std::to_string(ny_) + " x " + std::to_string(nz_) + ")");
   }
   rebuild(0.0, false);
+  if (cfg.fine.enabled()) {
+    fine_ = std::make_unique<FineRegion>(cfg.fine, cfg, grid(), ship_, motion_);
+    const auto& lo = fine_->window_lo();
+    const auto& n = fine_->window_n();
+    for (int k = lo[2]; k < lo[2] + n[2]; ++k)
+      for (int j = lo[1]; j < lo[1] + n[1]; ++j)
+        for (int i = lo[0]; i < lo[0] + n[0]; ++i) window_cells_.push_back(static_cast<std::uint32_t>(grid().index(i, j, k)));
+    window_ = fine_window();
+    fine_->start(window_, 0.0);
+  }
+}
+
+// The coarse air over the fine region's window (m/s, mean frame): in the fluid the lattice's, in the
+// ship the hull's velocity (no-slip), in the sea the air above it (the slip sea; for interpolation the
+// air just above the surface stays the air, not a layer slowed towards the sea cells).
+std::vector<float> ShipWakeDomain::fine_window() {
+  const std::vector<float> v = solver_->velocities(window_cells_);
+  const auto& lo = fine_->window_lo();
+  const auto& n = fine_->window_n();
+  const double scale = units_.dx() / units_.dt(), t = time();
+  const ShipPlacement place = motion_->placement(t);
+  std::vector<float> w(v.size());
+  std::size_t p = 0;
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i, ++p) {
+        const std::size_t c = window_cells_[p];
+        if (owner_[c] == kFluid) {
+          for (int d = 0; d < 3; ++d) w[3 * p + d] = static_cast<float>(v[3 * p + d] * scale);
+        } else if (owner_[c] == kShip) {
+          const Vec3 u = motion_->velocity(place.to_body(position(lo[0] + i, lo[1] + j, lo[2] + k)), t);
+          for (int d = 0; d < 3; ++d) w[3 * p + d] = static_cast<float>(u[d]);
+        } else if (!cfg_.no_slip_sea && k > 0) {  // z points down: the node above is k - 1
+          for (int d = 0; d < 3; ++d) w[3 * p + d] = w[3 * (p - static_cast<std::size_t>(n[0]) * n[1]) + d];
+        } else if (!cfg_.no_slip_sea) {
+          w[3 * p] = static_cast<float>(-cfg_.wind);
+          w[3 * p + 1] = w[3 * p + 2] = 0.0f;
+        } else {
+          w[3 * p] = w[3 * p + 1] = w[3 * p + 2] = 0.0f;  // a no-slip sea at rest
+        }
+      }
+  return w;
 }
 
 Vec3 ShipWakeDomain::position(int i, int j, int k) const { return origin_ + Vec3(i, j, k) * units_.dx(); }
 
-lbm::WallMotion ShipWakeDomain::hull_motion(double t) const {
-  lbm::WallMotion w;
-  const double dt = units_.dt(), dx = units_.dx();
-  const Vec3 v = motion_->centre_velocity(t) * dt / dx, om = motion_->omega(t) * dt;
-  const Vec3 c = (motion_->position(motion_->centre(), t) - origin_) / dx;
-  for (int d = 0; d < 3; ++d) {
-    w.v[d] = static_cast<float>(v[d]);
-    w.omega[d] = static_cast<float>(om[d]);
-    w.centre[d] = static_cast<float>(c[d]);
-  }
-  return w;
+NodeGrid ShipWakeDomain::grid() const {
+  NodeGrid g;
+  g.origin = origin_;
+  g.dx = units_.dx();
+  g.nx = nx_;
+  g.ny = ny_;
+  g.nz = nz_;
+  return g;
 }
 
-std::vector<std::uint8_t> ShipWakeDomain::voxelise(double t) const {
-  std::vector<std::uint8_t> owner(cells(), kFluid);
-  const double dx = units_.dx();
-  const double water = ship_->datum().waterline;
-  for (int k = 0; k < nz_; ++k)
-    if (position(0, 0, k).z() > water)
-      for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i) owner[i + static_cast<std::size_t>(nx_) * (j + static_cast<std::size_t>(ny_) * k)] = kSea;
-  // the hull's box at time t, in cells
-  Vec3 lo = Vec3::Constant(1e300), hi = -lo;
-  for (const Vec3& c : hull_box_) {
-    const Vec3 g = (motion_->position(c, t) - origin_) / dx;
-    lo = lo.cwiseMin(g);
-    hi = hi.cwiseMax(g);
-  }
-  const ShipPlacement place = motion_->placement(t);
-  for (int k = std::max(0, int(std::floor(lo.z())) - 1); k <= std::min(nz_ - 1, int(std::ceil(hi.z())) + 1); ++k)
-    for (int j = std::max(0, int(std::floor(lo.y())) - 1); j <= std::min(ny_ - 1, int(std::ceil(hi.y())) + 1); ++j)
-      for (int i = std::max(0, int(std::floor(lo.x())) - 1); i <= std::min(nx_ - 1, int(std::ceil(hi.x())) + 1); ++i) {
-        const std::size_t n = i + static_cast<std::size_t>(nx_) * (j + static_cast<std::size_t>(ny_) * k);
-        if (owner[n] != kFluid) continue;
-        if (ship_->inside(place.to_body(position(i, j, k)))) owner[n] = kShip;
-      }
-  return owner;
-}
+lbm::WallMotion ShipWakeDomain::hull_motion(double t) const { return hull_wall_motion(grid(), *motion_, t, units_.dt()); }
+
+std::vector<std::uint8_t> ShipWakeDomain::voxelise(double t) const { return voxelise_ship(grid(), *ship_, *motion_, hull_box_, t); }
 
 void ShipWakeDomain::rebuild(double t, bool carry) {
   std::vector<std::uint8_t> owner = voxelise(t);
@@ -162,12 +170,16 @@ void ShipWakeDomain::step(long n) {
   for (long s = 0; s < n; ++s) {
     solver_->step(1);
     ++steps_;
-    if (motion_->is_static()) continue;
     const double t = time();
-    double moved = 0;
-    for (const Vec3& c : hull_box_) moved = std::max(moved, (motion_->position(c, t) - motion_->position(c, voxel_time_)).norm());
-    if (moved > cfg_.revoxelise_cells * units_.dx()) rebuild(t, true);
-    solver_->set_wall_motion(0, hull_motion(t));
+    if (!motion_->is_static()) {
+      if (hull_displacement(*motion_, hull_box_, voxel_time_, t) > cfg_.revoxelise_cells * units_.dx()) rebuild(t, true);
+      solver_->set_wall_motion(0, hull_motion(t));
+    }
+    if (fine_) {
+      std::vector<float> after = fine_window();
+      fine_->advance(window_, after);
+      window_.swap(after);
+    }
   }
 }
 
@@ -237,16 +249,27 @@ ShipWakeDomain::State ShipWakeDomain::state() {
   s.voxel_time = voxel_time_;
   s.populations = solver_->populations();
   s.solver_steps = solver_->steps_done();
+  if (fine_) {
+    s.has_fine = true;
+    s.fine = fine_->state();
+  }
   return s;
 }
 
 void ShipWakeDomain::restore(const State& s) {
   if (s.steps < 0) throw lbm::ConfigError("wake: checkpoint with a negative step count");
+  if (s.has_fine != static_cast<bool>(fine_))
+    throw lbm::ConfigError(std::string("wake: a checkpoint ") + (s.has_fine ? "with" : "without") + " a fine region for a domain " +
+                           (fine_ ? "with" : "without") + " one");
   owner_.clear();
   rebuild(s.voxel_time, false);
   solver_->restore(s.solver_steps, s.populations);
   steps_ = s.steps;
   if (!motion_->is_static()) solver_->set_wall_motion(0, hull_motion(time()));
+  if (fine_) {
+    fine_->restore(s.fine);
+    window_ = fine_window();
+  }
 }
 
 }  // namespace ship_lrm::wake

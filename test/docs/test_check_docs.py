@@ -11,11 +11,12 @@ import tempfile
 
 CHECKER = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "check_docs.py"))
 WORD = "sess" + "ion"  # built from parts so that this file passes the check itself
+DESIGN = "design" + ".md"  # likewise: the planted citations must not cite the real page
 
 CLEAN = {
     "README.md": "# Tool\n\nSee [the design](docs/design.md#slip-edges) and `docs/design.md`.\n",
     "docs/design.md": "# Design\n\n## lbm\n\n### Slip edges\n\nText.\n\n### Walls that move\n\nText.\n",
-    "src/a.cpp": '// The rule (docs/design.md, "Slip edges"); the walls (design.md, "Walls\n// that move").\nint a;\n',
+    "src/a.cpp": f'// The rule (docs/{DESIGN}, "Slip edges"); the walls ({DESIGN}, "Walls\n// that move").\nint a;\n',
 }
 
 CASES = {
@@ -28,9 +29,9 @@ CASES = {
     "link to a missing heading": ({"docs/extra.md": "# Extra\n\n[x](design.md#no-such)\n"}, "no such heading"),
     "cited path missing": ({"docs/extra.md": "# Extra\n\nRun `scripts/none.sh`.\n"}, "does not exist"),
     "cited Markdown file missing": ({"docs/extra.md": "# Extra\n\nSee ARCH.md.\n"}, "not in the repository"),
-    "section citation that is no heading": ({"src/c.cpp": '// see docs/design.md, "Slip corners"\n'},
+    "section citation that is no heading": ({"src/c.cpp": f'// see docs/{DESIGN}, "Slip corners"\n'},
                                             "which is no heading there"),
-    "section citation across a line break": ({"src/c.cpp": '// see docs/design.md, "Walls\n// that stand"\n'},
+    "section citation across a line break": ({"src/c.cpp": f'// see docs/{DESIGN}, "Walls\n// that stand"\n'},
                                              "which is no heading there"),
 }
 

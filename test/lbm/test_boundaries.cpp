@@ -1,5 +1,5 @@
 // Open boundaries: velocity inlet / pressure outlet (Latt et al. 2008 FD reconstruction) and the
-// non-reflecting impedance outlet (thesis 6.1.3, eq. 6.15). 
+// non-reflecting impedance outlet (thesis 6.1.3, eq. 6.15).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -545,4 +545,63 @@ TEST(Forces, SegmentRestGivesTheVectorLoopsResultBitForBit) {
         for (int x = 0; x < nx; ++x)
           ASSERT_EQ(a[i * n + lat.index(x, y, z)], b[i * n + lat.index((x + shift) % nx, y, z)])
               << "direction " << i << " cell (" << x << ", " << y << ", " << z << ")";
+}
+
+// Solver::feed_faces_from_grid on the host: a linear field of the grid, u = a + B p, reaches every
+// velocity inlet and impedance outlet exactly (trilinear interpolation is exact for it), in lattice
+// units; pressure outlets keep their values; a field beyond the Mach limit is refused with nothing
+// changed.
+TEST(OpenBoundaries, FacesFedFromAGridTakeALinearFieldExactly) {
+  LatticeConfig lc;
+  lc.nx = 10;
+  lc.ny = 8;
+  lc.nz = 6;
+  lc.faces[0].type = FaceType::ImpedanceOutlet;
+  lc.faces[1].type = FaceType::VelocityInlet;
+  lc.faces[2].type = lc.faces[3].type = FaceType::VelocityInlet;
+  lc.faces[4].type = FaceType::PressureOutlet;
+  lc.faces[5].type = FaceType::Wall;
+  auto s = make_cpu_solver(Lattice(lc));
+  // the grid: 12 x 10 x 8 points of 0.5 m from (-1, -1, -1) m; the lattice's cell (x, y, z) sits at
+  // hub + (x, y, z) dx with hub (0, 0, 0), dx = 0.25 m: inside the grid
+  const int shape[3] = {12, 10, 8};
+  std::vector<float> u(3 * shape[0] * shape[1] * shape[2]);
+  auto field = [](const double p[3], int a) { return 2.0 + 0.3 * a + 0.5 * p[0] - 0.2 * p[1] + 0.1 * (a + 1) * p[2]; };
+  for (int k = 0, n = 0; k < shape[2]; ++k)
+    for (int j = 0; j < shape[1]; ++j)
+      for (int i = 0; i < shape[0]; ++i, ++n) {
+        const double p[3] = {-1 + 0.5 * i, -1 + 0.5 * j, -1 + 0.5 * k};
+        for (int a = 0; a < 3; ++a) u[3 * n + a] = static_cast<float>(field(p, a));
+      }
+  GridWindowView w;
+  for (int d = 0; d < 3; ++d) w.n[d] = shape[d];
+  w.u = u.data();
+  GridFeed f;
+  for (int d = 0; d < 3; ++d) {
+    f.origin[d] = -1;
+    f.shape[d] = shape[d];
+  }
+  f.spacing = 0.5;
+  f.dx = 0.25;
+  f.to_lattice = 0.01;  // dt / dx: 2 m/s -> 0.02
+  const std::vector<float> before = s->boundary_values();
+  s->feed_faces_from_grid(w, 0, w, 0, f);
+  const std::vector<float> after = s->boundary_values();
+  const Lattice& lat = s->lattice();
+  int fed = 0;
+  for (std::size_t b = 0; b < lat.boundary_cells().size(); ++b) {
+    const std::uint32_t c = lat.boundary_cells()[b];
+    const auto t = static_cast<CellType>(lat.types()[c] & ~kGeneralBit);
+    if (t == CellType::PressureOutlet) {
+      EXPECT_EQ(after[4 * b], before[4 * b]);
+      continue;
+    }
+    const double p[3] = {0.25 * (c % lc.nx), 0.25 * ((c / lc.nx) % lc.ny), 0.25 * (c / (lc.nx * lc.ny))};
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(after[4 * b + a], 0.01 * field(p, a), 2e-7) << "cell " << c;
+    ++fed;
+  }
+  EXPECT_GT(fed, 100);
+  f.to_lattice = 1.0;  // 2 - 4 lattice units: beyond the Mach limit
+  EXPECT_THROW(s->feed_faces_from_grid(w, 0, w, 0, f), ConfigError);
+  EXPECT_EQ(s->boundary_values(), after);
 }

@@ -123,4 +123,20 @@ SHIP_LRM_HD float impedance_reference_shift(float pending, std::uint8_t normal, 
   return pending + sgn * (component(new_u, axis) - component(old_u, axis));
 }
 
+// One open-boundary cell (x, y, z) fed by the grid (its 4 boundary values at `value`): a velocity inlet
+// takes the face velocity, an impedance outlet takes it as its reference and adds the reference's
+// outward normal change to its 4th value (see Solver::set_boundary_values). The CUDA feed kernel and
+// Solver::feed_faces_from_grid's host loop both call it.
+SHIP_LRM_HD void feed_boundary_cell(const GridFeed& f, const GridWindowView& w0, const GridWindowView& w1, bool impedance,
+                                    std::uint8_t normal, int x, int y, int z, float* value) {
+  double r[3], air[3], u[3];
+  feed_cell_position(f, x, y, z, r);
+  grid_air(f, w0, w1, r, air);
+  face_lattice_velocity(air, f.omega, r, f.to_lattice, u);
+  float nu[3];
+  for (int a = 0; a < 3; ++a) nu[a] = static_cast<float>(u[a]);
+  if (impedance) value[3] = impedance_reference_shift(value[3], normal, value, nu);
+  for (int a = 0; a < 3; ++a) value[a] = nu[a];
+}
+
 }  // namespace ship_lrm::lbm

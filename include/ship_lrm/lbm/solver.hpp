@@ -107,6 +107,11 @@ class Solver {
   // ConfigError if a fed face exceeded it. ConfigError on a backend without it (feeds_from_grid()).
   void feed_from_grid(const GridWindowView& w0, std::uint64_t serial0, const GridWindowView& w1, std::uint64_t serial1,
                       const GridFeed& feed);
+  // The same faces on any backend: feed_from_grid where the backend feeds its faces itself, else on
+  // the host with the same per-cell function (feed_boundary_cell, OpenMP), checked there: a face
+  // beyond the Mach limit throws ConfigError with nothing changed.
+  void feed_faces_from_grid(const GridWindowView& w0, std::uint64_t serial0, const GridWindowView& w1, std::uint64_t serial1,
+                            const GridFeed& feed);
   // Check the guard now (NaN / speed above mach_guard * c_s); throws DivergenceError.
   void check_divergence();
   // Raw populations (shifted, g = f - w) for tests: Q * cells, SoA.
@@ -115,6 +120,15 @@ class Solver {
   // layout depends on the step parity, so the step count comes back with them. Impedance outlets
   // restart from their reference flow. Throws ConfigError for a wrong size or non-finite values.
   void restore(long steps, const std::vector<float>& g);
+  // The open boundaries' memory between steps, for an exact checkpoint of a lattice with open faces:
+  // every cell's stored state (4 per cell: the last step's rho, u of the boundary and support cells;
+  // empty without open boundaries) and the boundary values (4 per boundary cell). Given back after
+  // restore() (same lattice), the next step is the one the uninterrupted run takes, bit for bit.
+  struct OpenBoundaryState {
+    std::vector<float> cell_state, values;
+  };
+  OpenBoundaryState open_boundary_state();
+  void restore_open_boundary_state(const OpenBoundaryState& s);  // ConfigError for wrong sizes or non-finite values
   // New wall cells without a restart (a moving body re-voxelised): `next` describes this lattice
   // (same size, faces, collision, number of wall motions and open-boundary cells) with other wall
   // cells; the open-boundary cells' links and gradient stencils may change with them. Fluid cells that stay fluid keep their
@@ -144,6 +158,8 @@ class Solver {
   virtual void do_fields(bool next_odd, Fields& out) = 0;
   virtual void do_initialize(const std::vector<float>& rho, const std::vector<float>& u) = 0;
   virtual void do_set_populations(const std::vector<float>& g) = 0;           // validated, populations() layout
+  virtual std::vector<float> do_cell_state() = 0;                             // the aux array, 4 per cell (empty: none)
+  virtual void do_set_cell_state(const std::vector<float>& a) = 0;            // validated, do_cell_state() layout
   virtual void sync_view() = 0;                                               // after view_ parameters changed on the host
   virtual void sync_walls() {}                                                // after lattice_'s wall motions changed (device copy)
   virtual void do_set_boundary_values(const std::vector<float>& values) = 0;  // validated, 4 per cell

@@ -18,8 +18,10 @@
 
 #include "ship_lrm/lbm/solver.hpp"
 #include "ship_lrm/lbm/units.hpp"
+#include "ship_lrm/wake/fine_region.hpp"
 #include "ship_lrm/wake/ship_geometry.hpp"
 #include "ship_lrm/wake/ship_motion.hpp"
+#include "ship_lrm/wake/ship_voxels.hpp"
 #include "ship_lrm/wake/wake_table.hpp"
 
 namespace ship_lrm::wake {
@@ -55,6 +57,9 @@ struct WakeConfig {
   // (model case, N = 48, after 5000 steps). The wind over the sea is an atmospheric profile, not a
   // boundary layer grown from the inlet; the slip surface keeps the inflow as given.
   bool no_slip_sea = false;
+  // A finer nested box around the aft superstructure, the deck and the approach path (fine_region.hpp):
+  // off while fine.ratio is 0.
+  FineRegionConfig fine;
 };
 
 class ShipWakeDomain {
@@ -72,10 +77,15 @@ class ShipWakeDomain {
   std::size_t rebuilds() const { return rebuilds_; }
   std::size_t ship_cells() const { return ship_cells_; }
   lbm::Solver& solver() { return *solver_; }
-  // Ship-frame position (mean pose) of lattice node (i, j, k).
+  // Ship-frame position (mean pose) of lattice node (i, j, k), and the grid of all nodes.
   Vec3 position(int i, int j, int k) const;
-  // Advance n steps; the hull moves with the ship motion.
+  NodeGrid grid() const;
+  // Advance n steps; the hull moves with the ship motion, and the fine region (if any) follows each
+  // step with its own `ratio` steps, fed from this domain's air.
   void step(long n = 1);
+  // The fine region, or null without one (WakeConfig::fine).
+  FineRegion* fine() { return fine_.get(); }
+  const FineRegion* fine() const { return fine_.get(); }
 
   // The lattice fields now (one copy serves table_frame and centre_plane in the same step).
   lbm::Fields fields() { return solver_->fields(); }
@@ -100,6 +110,8 @@ class ShipWakeDomain {
     long solver_steps = 0;  // since the lattice was last built (the population layout's parity)
     double voxel_time = 0;
     std::vector<float> populations;
+    bool has_fine = false;
+    FineRegion::State fine;
   };
   State state();
   void restore(const State& s);
@@ -117,7 +129,11 @@ class ShipWakeDomain {
   std::array<Vec3, 8> hull_box_;     // corners of the hull's box (ship frame)
   std::vector<std::uint8_t> owner_;  // 0 fluid, 1 sea, 2 ship
   std::unique_ptr<lbm::Solver> solver_;
+  std::unique_ptr<FineRegion> fine_;
+  std::vector<std::uint32_t> window_cells_;  // the coarse nodes that feed the fine region
+  std::vector<float> window_;                // their air after the last step (m/s)
   std::vector<std::uint8_t> voxelise(double t) const;
+  std::vector<float> fine_window();
   void rebuild(double t, bool carry);
   lbm::WallMotion hull_motion(double t) const;
 };
