@@ -205,6 +205,8 @@ void FineRegion::rebuild(double t, bool carry) {
 void FineRegion::start(const std::vector<float>& window, double t) {
   check_window(window);
   const lbm::GridWindowView w = view(window);
+  lbm::GridFeed f = feed_;
+  f.weight1 = 0;
   std::vector<float> u(3 * grid_.cells(), 0.0f);
   for (int k = 0; k < grid_.nz; ++k)
     for (int j = 0; j < grid_.ny; ++j)
@@ -214,15 +216,14 @@ void FineRegion::start(const std::vector<float>& window, double t) {
         const Vec3 p = grid_.position(i, j, k);
         const double pp[3] = {p.x(), p.y(), p.z()};
         float v[3];
-        lbm::GridFeed f = feed_;
-        f.weight1 = 0;
         lbm::grid_velocity(f, w, w, pp, v);
         for (int d = 0; d < 3; ++d) u[3 * n + d] = static_cast<float>(v[d] * feed_.to_lattice);
       }
   // the faces first: the start from this state then leaves the impedance outlets no reference change
   // to follow (Solver::initialize), as the state is their reference's
   feed_.weight1 = 0;
-  solver_->feed_faces_from_grid(w, 0, w, 0, feed_);
+  serial_ = 1;
+  solver_->feed_faces_from_grid(w, serial_, w, serial_, feed_);
   solver_->initialize({}, u);  // ConfigError beyond the Mach limit
   time_ = t;
 }
@@ -231,9 +232,11 @@ void FineRegion::advance(const std::vector<float>& before, const std::vector<flo
   check_window(before);
   check_window(after);
   const lbm::GridWindowView w0 = view(before), w1 = view(after);
+  // `before` is the last call's `after`: a device copies each window once, not at every fine step
+  const std::uint64_t s0 = serial_, s1 = ++serial_;
   for (int s = 1; s <= cfg_.ratio; ++s) {
     feed_.weight1 = static_cast<double>(s - 1) / cfg_.ratio;
-    solver_->feed_faces_from_grid(w0, 0, w1, 0, feed_);
+    solver_->feed_faces_from_grid(w0, s0, w1, s1, feed_);
     solver_->step(1);
     ++steps_;
     time_ += units_.dt();

@@ -3,18 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "ship_lrm/lbm/refill.hpp"
 #include "ship_lrm/wake/ship_voxels.hpp"
 
 namespace ship_lrm::wake {
-namespace {
-
-constexpr std::uint8_t kFluid = kFluidNode, kSea = kSeaNode, kShip = kShipNode;
-
-}  // namespace
-
 lbm::UnitConverter wake_units(const WakeConfig& cfg, double ship_length) {
   if (cfg.cells_per_length < 16)
     throw lbm::ConfigError("wake: N must be >= 16 cells per ship length, got " + std::to_string(cfg.cells_per_length));
@@ -83,9 +76,9 @@ std::vector<float> ShipWakeDomain::fine_window() {
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i, ++p) {
         const std::size_t c = window_cells_[p];
-        if (owner_[c] == kFluid) {
+        if (owner_[c] == kFluidNode) {
           for (int d = 0; d < 3; ++d) w[3 * p + d] = static_cast<float>(v[3 * p + d] * scale);
-        } else if (owner_[c] == kShip) {
+        } else if (owner_[c] == kShipNode) {
           const Vec3 u = motion_->velocity(place.to_body(position(lo[0] + i, lo[1] + j, lo[2] + k)), t);
           for (int d = 0; d < 3; ++d) w[3 * p + d] = static_cast<float>(u[d]);
         } else if (!cfg_.no_slip_sea && k > 0) {  // z points down: the node above is k - 1
@@ -142,10 +135,10 @@ void ShipWakeDomain::rebuild(double t, bool carry) {
     for (int j = 0; j < ny_; ++j)
       for (int i = 0; i < nx_; ++i) {
         const std::uint8_t o = owner[lat.index(i, j, k)];
-        if (o == kSea && !cfg_.no_slip_sea) lat.set_slip_wall(i, j, k);
-        if ((o == kSea && cfg_.no_slip_sea) || (o == kShip && !moving)) lat.set_wall(i, j, k);
-        if (o == kShip && moving) lat.set_moving_wall(i, j, k, hull);
-        ship_cells_ += o == kShip;
+        if (o == kSeaNode && !cfg_.no_slip_sea) lat.set_slip_wall(i, j, k);
+        if ((o == kSeaNode && cfg_.no_slip_sea) || (o == kShipNode && !moving)) lat.set_wall(i, j, k);
+        if (o == kShipNode && moving) lat.set_moving_wall(i, j, k, hull);
+        ship_cells_ += o == kShipNode;
       }
   if (carry) ++rebuilds_;
   if (carry && solver_ && solver_->change_walls(lat)) {  // in place (the CPU): the flow keeps its history
@@ -161,7 +154,7 @@ void ShipWakeDomain::rebuild(double t, bool carry) {
   } else {
     std::vector<float> u(3 * cells(), 0.0f);
     for (std::size_t n = 0; n < cells(); ++n)
-      if (owner_[n] == kFluid) u[3 * n] = static_cast<float>(-cfg_.lattice_wind);
+      if (owner_[n] == kFluidNode) u[3 * n] = static_cast<float>(-cfg_.lattice_wind);
     solver_->initialize({}, u);
   }
 }
@@ -213,10 +206,10 @@ void ShipWakeDomain::table_frame(const lbm::Fields& f, std::vector<float>& veloc
     for (int j = j0; j < j0 + info.shape[1]; ++j)
       for (int i = 0; i < info.shape[0]; ++i, ++p) {
         const std::size_t n = i + static_cast<std::size_t>(nx_) * (j + static_cast<std::size_t>(ny_) * k);
-        if (owner_[n] == kFluid) {
+        if (owner_[n] == kFluidNode) {
           for (int d = 0; d < 3; ++d) velocity[3 * p + d] = static_cast<float>(f.u[3 * n + d] * scale);
           density[p] = static_cast<float>(f.rho[n] * cfg_.density);
-        } else if (owner_[n] == kShip) {
+        } else if (owner_[n] == kShipNode) {
           const Vec3 v = motion_->velocity(place.to_body(position(i, j, k)), t);
           for (int d = 0; d < 3; ++d) velocity[3 * p + d] = static_cast<float>(v[d]);
         }
@@ -237,7 +230,7 @@ ShipWakeDomain::Plane ShipWakeDomain::centre_plane(const lbm::Fields& f) const {
     for (int i = 0; i < nx_; ++i) {
       const std::size_t n = i + static_cast<std::size_t>(nx_) * (jc + static_cast<std::size_t>(ny_) * k),
                         p = i + static_cast<std::size_t>(nx_) * k;
-      pl.solid[p] = owner_[n] != kFluid;
+      pl.solid[p] = owner_[n] != kFluidNode;
       for (int d = 0; d < 3; ++d) pl.u[3 * p + d] = pl.solid[p] ? 0.0f : static_cast<float>(f.u[3 * n + d] * scale);
     }
   return pl;

@@ -55,15 +55,20 @@ def slug(heading):
     return s.replace(" ", "-")
 
 
-def anchors(path):
-    result = set()
+def headings(path):
+    """The text of every Markdown heading of a page (outside code blocks)."""
+    result = []
     in_code = False
     for line in open(path, encoding="utf-8"):
         if line.startswith("```"):
             in_code = not in_code
         elif not in_code and line.startswith("#"):
-            result.add(slug(line.lstrip("#")))
+            result.append(line.lstrip("#"))
     return result
+
+
+def anchors(path):
+    return {slug(h) for h in headings(path)}
 
 
 def normal(text):
@@ -71,14 +76,7 @@ def normal(text):
 
 
 def heading_texts(path):
-    result = []
-    in_code = False
-    for line in open(path, encoding="utf-8"):
-        if line.startswith("```"):
-            in_code = not in_code
-        elif not in_code and line.startswith("#"):
-            result.append(normal(line.lstrip("#")))
-    return result
+    return [normal(h) for h in headings(path)]
 
 
 def doc_pages(files):

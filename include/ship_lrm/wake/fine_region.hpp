@@ -49,8 +49,9 @@ class FineRegion {
   std::size_t window_points() const { return static_cast<std::size_t>(n_[0]) * n_[1] * n_[2]; }
   // Every fluid node starts at equilibrium with the coarse window's air interpolated to it, time t.
   void start(const std::vector<float>& window, double t);
-  // One coarse step, the coarse air at its start (`before`) and end (`after`): `ratio` fine steps,
-  // fine step s (1 .. ratio) fed at its own start time, weight (s - 1) / ratio on `after`.
+  // One coarse step, the coarse air at its start (`before`: the previous call's `after`, or start's
+  // window) and end (`after`): `ratio` fine steps, fine step s (1 .. ratio) fed at its own start
+  // time, weight (s - 1) / ratio on `after`.
   void advance(const std::vector<float>& before, const std::vector<float>& after);
   double time() const { return time_; }
   long steps() const { return steps_; }
@@ -91,6 +92,7 @@ class FineRegion {
   std::vector<std::uint8_t> owner_;
   std::unique_ptr<lbm::Solver> solver_;
   lbm::GridFeed feed_;
+  std::uint64_t serial_ = 0;  // of the last window handed over (a device copies a window once per serial)
   void check_window(const std::vector<float>& w) const;
   void check_ship_clearance() const;
   void rebuild(double t, bool carry);
