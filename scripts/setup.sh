@@ -7,7 +7,7 @@ export PATH=/usr/bin:/bin:$PATH  # Debian's python3 for catkin, not a pyenv one
 
 PACKAGES=(
   build-essential cmake clang-format
-  libeigen3-dev libcli11-dev libgtest-dev libgmock-dev libyaml-cpp-dev libhdf5-dev
+  libeigen3-dev libcli11-dev libgtest-dev libgmock-dev libyaml-cpp-dev libhdf5-dev nlohmann-json3-dev
   catkin ros-core-dev libroscpp-dev ros-message-generation ros-message-runtime
   libnodelet-dev libnodeletlib-dev libnodeletlib-tools pluginlib-dev python3-rostest librostest-dev
   libtf2-ros-dev libdiagnostic-updater-dev libstd-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev libnav-msgs-dev

@@ -1,5 +1,6 @@
 // `ship_lrm validate cylinder`: the Schaefer & Turek 3D-1Z drag benchmark at a chosen resolution.
 // `ship_lrm validate stream-stability`: does a disturbed uniform stream stay uniform (stream_stability.hpp)?
+// `ship_lrm validate nrc-deck` (with the wake module): cmd_validate_nrc_deck.cpp.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -108,7 +109,7 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
 }  // namespace
 
 std::function<int()> add_validate_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("validate", "Validation cases of the LBM core");
+  auto* cmd = app.add_subcommand("validate", "Validation cases: the LBM core, the NRC deck case");
   cmd->require_subcommand(1);
   auto* cyl = cmd->add_subcommand("cylinder",
                                   "Schaefer & Turek 1996 case 3D-1Z: drag of a cylinder in a channel at Re = 20 (reference c_D = 6.18533)");
@@ -130,8 +131,14 @@ std::function<int()> add_validate_command(CLI::App& app) {
   cyl->add_option("--vti", o->vti, "write the final flow field to this .vti file (ParaView)");
   cyl->add_flag("--overwrite", o->overwrite, "replace an existing --vti file");
   auto stability = add_stream_stability_command(*cmd);
-  return [o, cyl, stability]() -> int {
+#ifdef SHIP_LRM_HAVE_FLIGHT
+  auto nrc_deck = add_nrc_deck_command(*cmd);
+#else
+  std::function<int()> nrc_deck = [] { return -1; };
+#endif
+  return [o, cyl, stability, nrc_deck]() -> int {
     if (const int r = stability(); r >= 0) return r;
+    if (const int r = nrc_deck(); r >= 0) return r;
     if (!cyl->parsed()) return -1;
     check_output_file(o->vti, "--vti", o->overwrite);
     const auto r = lbm::run_cylinder_benchmark(

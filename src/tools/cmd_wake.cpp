@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "ship_lrm/flight/parameters.hpp"
+#include "ship_lrm/wake/probe_points.hpp"
 #include "ship_lrm/wake/wake_precompute.hpp"
 
 namespace ship_lrm::tools {
@@ -29,6 +30,10 @@ std::function<int()> add_wake_command(CLI::App& app) {
   auto mesh = std::make_shared<std::string>();
   auto collision = std::make_shared<std::string>("bgk");
   auto flags = std::make_shared<std::array<bool, 4>>();  // overwrite, no-resume, float32, no-plot
+  auto fine_box = std::make_shared<std::vector<double>>();
+  auto probes = std::make_shared<std::string>();
+  auto probe_frame = std::make_shared<std::string>("tunnel");
+  auto probe_scale = std::make_shared<std::string>();
   cmd->add_option("--preset", *preset,
                   "default (the approach scenario's table; cached under ~/.cache/ship_lrm when --out is not given) or tiny");
   cmd->add_option("--ship", opt->ship, "natogd, sfs2 or FILE.stl (full scale, metres, ship frame: x forward, z down)");
@@ -42,6 +47,26 @@ std::function<int()> add_wake_command(CLI::App& app) {
   cmd->add_option("--interval", opt->frame_interval, "seconds between frames (thesis: 0.02)");
   cmd->add_option("--stats-interval", opt->stats_interval, "seconds between centre-plane samples (default: the frame interval)")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--fine-ratio", opt->domain.fine.ratio,
+                  "a fine region nested in the wake domain at this many fine cells per coarse cell (1 .. 16; 0: none; e.g. --N 52 "
+                  "--fine-ratio 7: 364 cells per ship length over the deck, the thesis' converged resolution)")
+      ->check(CLI::Range(0, 16));
+  cmd->add_option("--fine-box", *fine_box,
+                  "the fine region, ship lengths: AFT,FORE,HALF_WIDTH,TOP (x forward from the hangar door, |y|, height above the "
+                  "waterline; default -0.42,0.35,0.15,0.3)")
+      ->delimiter(',')
+      ->expected(4);
+  cmd->add_option("--fine-start", opt->domain.fine.start,
+                  "start the fine region this many seconds into the run, from the coarse air (default 0; before it only the coarse "
+                  "domain runs: give the start-up minus a few of the region's flow-through times)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--probes", *probes, "probe points, a CSV of x,y,z in metres: velocity series and statistics (FILE_probes*.csv)");
+  cmd->add_option("--probe-frame", *probe_frame,
+                  "the probes' frame: tunnel (origin at the bottom of the hangar door on the centreline, x aft along the deck, y "
+                  "starboard, z up; the NRC wind-tunnel frame of thesis 7.1) or ship (x forward, y starboard, z down)")
+      ->check(CLI::IsMember({"tunnel", "ship"}));
+  cmd->add_option("--probe-scale", *probe_scale, "the scale the probes are given at: model or full (default: the run's --scale)")
+      ->check(CLI::IsMember({"model", "full"}));
   cmd->add_option("--backend", *backend, "cpu, cuda or auto");
   cmd->add_option("--smagorinsky", opt->domain.smagorinsky, "Smagorinsky constant s (thesis 6.2: 0.025)");
   cmd->add_option("--viscosity", opt->domain.viscosity, "kinematic viscosity, m^2/s (thesis tables 6.2, 6.3: 1.46072e-4)");
@@ -81,6 +106,20 @@ std::function<int()> add_wake_command(CLI::App& app) {
       if (o.out.empty() && *preset == "default") o.out = wake::default_table_path();
     }
     if (o.out.empty()) throw CLI::ValidationError("--out", "give the table file (FILE.h5)");
+    if (!fine_box->empty()) {
+      if (o.domain.fine.ratio == 0) throw CLI::ValidationError("--fine-box", "needs --fine-ratio");
+      o.domain.fine.aft = (*fine_box)[0];
+      o.domain.fine.fore = (*fine_box)[1];
+      o.domain.fine.half_width = (*fine_box)[2];
+      o.domain.fine.top = (*fine_box)[3];
+    }
+    std::vector<std::array<double, 3>> probe_labels;
+    if (!probes->empty()) {
+      probe_labels = wake::read_probe_csv(*probes);
+      const wake::ProbeFrame frame = wake::parse_probe_frame(*probe_frame);
+      const double factor = wake::ship_scale(probe_scale->empty() ? o.scale : *probe_scale) / wake::ship_scale(o.scale);
+      for (const auto& p : probe_labels) o.probes.push_back(wake::to_ship_frame(p, frame, factor));
+    }
     o.domain.collision = lbm::parse_collision_model(*collision);
     // The flow over the superstructure reaches 1.11 times the wind; a faster lattice wind costs accuracy
     // (compressibility) and, with BGK, stability (docs/design.md, "A characteristic inlet"; benchmarks, 2026-12-04)
@@ -150,12 +189,28 @@ std::function<int()> add_wake_command(CLI::App& app) {
       std::cout << "stopped: checkpoint " << ckpt << " written; run the same command again to resume\n";
       return 130;
     }
+    if (r.fine_cells > 0)
+      std::cout << "fine region: " << r.fine_cells << " cells, dx = " << r.fine_dx << " m; MLUPS coarse " << r.coarse_mlups << ", fine "
+                << r.fine_mlups << " (" << r.coarse_seconds << " s and " << r.fine_seconds << " s of steps)\n";
     std::cout << "wrote " << r.table << ", " << r.xdmf << ", " << r.centre_plane_csv << "\n";
+    if (!r.fine_centre_plane_csv.empty()) std::cout << "wrote " << r.fine_centre_plane_csv << "\n";
+    if (!r.probes_csv.empty()) {
+      const std::string stats = fs::path(r.probes_csv).replace_extension("").string() + "_statistics.csv";
+      wake::write_probe_statistics_csv(stats, r.probes, probe_labels, *probe_frame, o.domain.wind);
+      std::cout << "wrote " << r.probes_csv << ", " << stats << "\n";
+      if (!(*flags)[3] && !run_script("plot_probes.py", "'" + r.probes_csv + "' --wind " + std::to_string(o.domain.wind)))
+        std::cerr << "ship_lrm: warning: the probe plots failed (needs python3 with scipy and matplotlib); the CSVs are complete\n";
+    }
     if (!(*flags)[3]) {
       const fs::path png = fs::path(r.centre_plane_csv).replace_extension(".png");
       if (!run_script("plot_wake.py", "plane '" + r.centre_plane_csv + "' '" + png.string() + "'"))
         std::cerr << "ship_lrm: warning: plotting failed (needs python3 with matplotlib); the CSV " << r.centre_plane_csv
                   << " is complete\n";
+      if (!r.fine_centre_plane_csv.empty()) {
+        const fs::path fine_png = fs::path(r.fine_centre_plane_csv).replace_extension(".png");
+        if (!run_script("plot_wake.py", "plane '" + r.fine_centre_plane_csv + "' '" + fine_png.string() + "'"))
+          std::cerr << "ship_lrm: warning: plotting the fine centre plane failed; the CSV " << r.fine_centre_plane_csv << " is complete\n";
+      }
     }
     return 0;
   };

@@ -58,6 +58,8 @@ std::function<int()> add_wake_command(CLI::App& app);
 std::function<int()> add_approach_command(CLI::App& app);
 // `sweep free-wake` (cmd_sweep_free_wake.cpp), registered by add_sweep_command.
 std::function<int()> add_free_wake_sweep(CLI::App& sweep);
+// `validate nrc-deck` under the validate command (cmd_validate_nrc_deck.cpp).
+std::function<int()> add_nrc_deck_command(CLI::App& validate);
 // Where `ship_lrm wake --preset default` keeps its table: $SHIP_LRM_WAKE_CACHE or ~/.cache/ship_lrm.
 
 // Shared by the sweep commands (cmd_flight.cpp):

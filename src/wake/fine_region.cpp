@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 
+#include "ship_lrm/lbm/grid_feed.hpp"
 #include "ship_lrm/lbm/refill.hpp"
 #include "ship_lrm/wake/wake_domain.hpp"
 
@@ -48,6 +49,7 @@ FineRegion::FineRegion(const FineRegionConfig& cfg, const WakeConfig& wake, cons
                            " fine cells per coarse cell, got " + std::to_string(cfg.ratio));
   for (double v : {cfg.aft, cfg.fore, cfg.half_width, cfg.top})
     if (!std::isfinite(v)) throw lbm::ConfigError("fine region: the box must be finite");
+  if (!(cfg.start >= 0) || !std::isfinite(cfg.start)) throw lbm::ConfigError("fine region: its start time must be >= 0 s");
   if (!(cfg.fore > cfg.aft) || !(cfg.half_width > 0) || !(cfg.top > 0))
     throw lbm::ConfigError("fine region: the box needs fore > aft, a half width > 0 and a top > 0 above the waterline (ship lengths)");
   const double l = ship_->datum().length, dx = coarse.dx, water = ship_->datum().waterline;
@@ -244,6 +246,30 @@ void FineRegion::advance(const std::vector<float>& before, const std::vector<flo
     if (hull_displacement(*motion_, hull_box_, voxel_time_, time_) > revoxelise_cells_ * grid_.dx) rebuild(time_, true);
     solver_->set_wall_motion(0, hull_wall_motion(grid_, *motion_, time_, units_.dt()));
   }
+}
+
+void FineRegion::table_frame(const lbm::Fields& f, double free_density, std::vector<float>& velocity, std::vector<float>& density) const {
+  const double scale = units_.dx() / units_.dt();
+  const std::size_t n = grid_.cells();
+  velocity.assign(3 * n, 0.0f);
+  density.assign(n, static_cast<float>(free_density));
+  const ShipPlacement place = motion_->placement(time_);
+  for (int k = 0; k < grid_.nz; ++k)
+    for (int j = 0; j < grid_.ny; ++j)
+      for (int i = 0; i < grid_.nx; ++i) {
+        const std::size_t c = grid_.index(i, j, k);
+        if (owner_[c] == kFluidNode) {
+          for (int d = 0; d < 3; ++d) velocity[3 * c + d] = static_cast<float>(f.u[3 * c + d] * scale);
+          density[c] = static_cast<float>(f.rho[c] * free_density);
+        } else if (owner_[c] == kShipNode) {
+          const Vec3 v = motion_->velocity(place.to_body(grid_.position(i, j, k)), time_);
+          for (int d = 0; d < 3; ++d) velocity[3 * c + d] = static_cast<float>(v[d]);
+        }
+      }
+}
+
+bool FineRegion::velocity_at(const lbm::Fields& f, const Vec3& p, std::array<double, 3>& u) const {
+  return fluid_velocity_at(grid_, owner_, f.u.data(), units_.dx() / units_.dt(), p, u);
 }
 
 FineRegion::State FineRegion::state() {

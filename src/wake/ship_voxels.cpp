@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "ship_lrm/lbm/grid_feed.hpp"
+
 namespace ship_lrm::wake {
 
 std::array<Vec3, 8> hull_box(const ShipGeometry& ship) {
@@ -61,6 +63,28 @@ double hull_displacement(const ShipMotion& motion, const std::array<Vec3, 8>& bo
   double moved = 0;
   for (const Vec3& c : box) moved = std::max(moved, (motion.position(c, t1) - motion.position(c, t0)).norm());
   return moved;
+}
+
+bool fluid_velocity_at(const NodeGrid& grid, const std::vector<std::uint8_t>& owner, const float* u, double scale, const Vec3& p,
+                       std::array<double, 3>& out) {
+  const double g[3] = {(p.x() - grid.origin.x()) / grid.dx, (p.y() - grid.origin.y()) / grid.dx, (p.z() - grid.origin.z()) / grid.dx};
+  const int shape[3] = {grid.nx, grid.ny, grid.nz};
+  if (!lbm::grid_inside(g, shape)) return false;
+  if (owner[grid.index(static_cast<int>(std::lround(g[0])), static_cast<int>(std::lround(g[1])), static_cast<int>(std::lround(g[2])))] !=
+      kFluidNode)
+    return false;
+  int i[3];
+  double fr[3];
+  lbm::grid_cell(g, shape, i, fr);
+  out = {0, 0, 0};
+  for (int c = 0; c < 8; ++c) {
+    const int dx = c & 1, dy = (c >> 1) & 1, dz = (c >> 2) & 1;
+    const std::size_t n = grid.index(i[0] + dx, i[1] + dy, i[2] + dz);
+    if (owner[n] != kFluidNode) continue;  // a wall corner: the air at rest on it (no slip, mean frame)
+    const double w = scale * (dx ? fr[0] : 1 - fr[0]) * (dy ? fr[1] : 1 - fr[1]) * (dz ? fr[2] : 1 - fr[2]);
+    for (int a = 0; a < 3; ++a) out[a] += w * u[3 * n + a];
+  }
+  return true;
 }
 
 }  // namespace ship_lrm::wake

@@ -2,6 +2,7 @@
 #include "ship_lrm/wake/wake_domain.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "ship_lrm/lbm/refill.hpp"
@@ -56,9 +57,14 @@ ShipWakeDomain::ShipWakeDomain(const WakeConfig& cfg, std::shared_ptr<const Ship
     for (int k = lo[2]; k < lo[2] + n[2]; ++k)
       for (int j = lo[1]; j < lo[1] + n[1]; ++j)
         for (int i = lo[0]; i < lo[0] + n[0]; ++i) window_cells_.push_back(static_cast<std::uint32_t>(grid().index(i, j, k)));
-    window_ = fine_window();
-    fine_->start(window_, 0.0);
+    if (cfg.fine.start <= 0.0) start_fine();
   }
+}
+
+void ShipWakeDomain::start_fine() {
+  window_ = fine_window();
+  fine_->start(window_, time());
+  fine_started_ = true;
 }
 
 // The coarse air over the fine region's window (m/s, mean frame): in the fluid the lattice's, in the
@@ -160,7 +166,9 @@ void ShipWakeDomain::rebuild(double t, bool carry) {
 }
 
 void ShipWakeDomain::step(long n) {
+  using Clock = std::chrono::steady_clock;
   for (long s = 0; s < n; ++s) {
+    const auto t0 = Clock::now();
     solver_->step(1);
     ++steps_;
     const double t = time();
@@ -168,10 +176,15 @@ void ShipWakeDomain::step(long n) {
       if (hull_displacement(*motion_, hull_box_, voxel_time_, t) > cfg_.revoxelise_cells * units_.dx()) rebuild(t, true);
       solver_->set_wall_motion(0, hull_motion(t));
     }
-    if (fine_) {
+    const auto t1 = Clock::now();
+    coarse_seconds_ += std::chrono::duration<double>(t1 - t0).count();
+    if (fine_ && !fine_started_ && t + 0.5 * units_.dt() >= cfg_.fine.start) {
+      start_fine();
+    } else if (fine_started_) {
       std::vector<float> after = fine_window();
       fine_->advance(window_, after);
       window_.swap(after);
+      fine_seconds_ += std::chrono::duration<double>(Clock::now() - t1).count();
     }
   }
 }
@@ -190,7 +203,33 @@ WakeTableInfo ShipWakeDomain::table_info() const {
   info.free_density = cfg_.density;
   info.ship = ship_->name();
   info.motion = motion_->name();
+  if (fine_) {
+    // the fine grid's first node is coarse node window_lo(); the sea face (z+: z points down) has
+    // nothing to blend with, the other five are blended into the coarse grid over two coarse cells
+    const NodeGrid& g = fine_->grid();
+    info.fine.ratio = fine_->config().ratio;
+    info.fine.lo = {fine_->window_lo()[0], fine_->window_lo()[1] - (jc - half), fine_->window_lo()[2] - k0};
+    info.fine.shape = {g.nx, g.ny, g.nz};
+    info.fine.seam = {1, 1, 1, 1, 1, 0};
+    info.fine.seam_cells = 2;
+    // the table stores the fine grid inside its coarse box
+    for (int d = 0; d < 3; ++d)
+      if (info.fine.lo[d] < 0 || info.fine.lo[d] + (info.fine.shape[d] - 1) / info.fine.ratio > info.shape[d] - 1)
+        throw GeometryError("wake: the fine region reaches outside the tabulated region (x from the outflow face to the stem, |y| <= " +
+                            std::to_string(0.5 * cfg_.table_width) + " ship lengths, from " + std::to_string(cfg_.table_top) +
+                            " ship lengths below the top down); shrink it or widen the table");
+  }
   return info;
+}
+
+void ShipWakeDomain::fine_table_frame(std::vector<float>& velocity, std::vector<float>& density) {
+  velocity.clear();
+  density.clear();
+  if (fine_) fine_->table_frame(fine_->fields(), cfg_.density, velocity, density);
+}
+
+bool ShipWakeDomain::velocity_at(const lbm::Fields& f, const Vec3& p, std::array<double, 3>& u) const {
+  return fluid_velocity_at(grid(), owner_, f.u.data(), units_.dx() / units_.dt(), p, u);
 }
 
 void ShipWakeDomain::table_frame(const lbm::Fields& f, std::vector<float>& velocity, std::vector<float>& density) const {
@@ -216,24 +255,36 @@ void ShipWakeDomain::table_frame(const lbm::Fields& f, std::vector<float>& veloc
       }
 }
 
-ShipWakeDomain::Plane ShipWakeDomain::centre_plane(const lbm::Fields& f) const {
-  const double scale = units_.dx() / units_.dt();
-  const int jc = (ny_ - 1) / 2;
-  Plane pl;
-  pl.nx = nx_;
-  pl.nz = nz_;
-  pl.u.resize(3 * static_cast<std::size_t>(nx_) * nz_);
-  pl.solid.resize(static_cast<std::size_t>(nx_) * nz_);
-  for (int i = 0; i < nx_; ++i) pl.x.push_back(position(i, jc, 0).x());
-  for (int k = 0; k < nz_; ++k) pl.z.push_back(position(0, jc, k).z());
-  for (int k = 0; k < nz_; ++k)
-    for (int i = 0; i < nx_; ++i) {
-      const std::size_t n = i + static_cast<std::size_t>(nx_) * (jc + static_cast<std::size_t>(ny_) * k),
-                        p = i + static_cast<std::size_t>(nx_) * k;
-      pl.solid[p] = owner_[n] != kFluidNode;
+namespace {
+// The plane of nodes j (y = 0) of a grid: the fluid's velocity (lattice velocities times scale) and
+// the solid flag; solids at rest in the plane's statistics.
+PlaneSample node_plane(const NodeGrid& g, int j, const std::vector<std::uint8_t>& owner, const lbm::Fields& f, double scale) {
+  PlaneSample pl;
+  pl.nx = g.nx;
+  pl.nz = g.nz;
+  pl.u.resize(3 * static_cast<std::size_t>(g.nx) * g.nz);
+  pl.solid.resize(static_cast<std::size_t>(g.nx) * g.nz);
+  for (int i = 0; i < g.nx; ++i) pl.x.push_back(g.position(i, j, 0).x());
+  for (int k = 0; k < g.nz; ++k) pl.z.push_back(g.position(0, j, k).z());
+  for (int k = 0; k < g.nz; ++k)
+    for (int i = 0; i < g.nx; ++i) {
+      const std::size_t n = g.index(i, j, k), p = i + static_cast<std::size_t>(g.nx) * k;
+      pl.solid[p] = owner[n] != kFluidNode;
       for (int d = 0; d < 3; ++d) pl.u[3 * p + d] = pl.solid[p] ? 0.0f : static_cast<float>(f.u[3 * n + d] * scale);
     }
   return pl;
+}
+}  // namespace
+
+ShipWakeDomain::Plane ShipWakeDomain::centre_plane(const lbm::Fields& f) const {
+  return node_plane(grid(), (ny_ - 1) / 2, owner_, f, units_.dx() / units_.dt());
+}
+
+ShipWakeDomain::Plane ShipWakeDomain::fine_centre_plane(const lbm::Fields& f) const {
+  if (!fine_) return {};
+  const NodeGrid& g = fine_->grid();
+  const int j = static_cast<int>(std::lround(-g.origin.y() / g.dx));  // the fine grid's row at y = 0
+  return node_plane(g, j, fine_->owner(), f, fine_->units().dx() / fine_->units().dt());
 }
 
 ShipWakeDomain::State ShipWakeDomain::state() {
@@ -244,6 +295,7 @@ ShipWakeDomain::State ShipWakeDomain::state() {
   s.solver_steps = solver_->steps_done();
   if (fine_) {
     s.has_fine = true;
+    s.fine_started = fine_started_;
     s.fine = fine_->state();
   }
   return s;
@@ -261,6 +313,7 @@ void ShipWakeDomain::restore(const State& s) {
   if (!motion_->is_static()) solver_->set_wall_motion(0, hull_motion(time()));
   if (fine_) {
     fine_->restore(s.fine);
+    fine_started_ = s.fine_started;
     window_ = fine_window();
   }
 }

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace ship_lrm::wake {
@@ -16,7 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-constexpr char kMagic[16] = "SHIPLRM-WAKECK1";
+constexpr char kMagic[16] = "SHIPLRM-WAKECK2";  // 2: with the fine region, its statistics and the probes
+constexpr char kOldMagic[16] = "SHIPLRM-WAKECK1";
 
 // What a checkpoint must match to be resumed.
 std::string signature(const PrecomputeOptions& o, const ShipWakeDomain& d) {
@@ -28,6 +30,13 @@ std::string signature(const PrecomputeOptions& o, const ShipWakeDomain& d) {
     << " half=" << o.half_precision;
   if (o.domain.collision != lbm::CollisionModel::Bgk) s << " collision=" << lbm::to_string(o.domain.collision);
   if (o.domain.characteristic_inlet) s << " inlet=characteristic";  // none: the reflecting inlet of the tables before 2026-12-04
+  if (o.domain.fine.enabled())
+    s << " fine=" << o.domain.fine.ratio << ":" << o.domain.fine.aft << ":" << o.domain.fine.fore << ":" << o.domain.fine.half_width << ":"
+      << o.domain.fine.top;
+  if (!o.probes.empty()) {
+    s << " probes=";
+    for (const auto& p : o.probes) s << p[0] << "," << p[1] << "," << p[2] << ";";
+  }
   return s.str();
 }
 
@@ -61,8 +70,37 @@ struct Checkpoint {
   std::string signature;
   ShipWakeDomain::State state;
   int frames = 0;
-  CentrePlaneStats stats;
+  CentrePlaneStats stats, fine_stats;
+  ProbeSeries probes;
+  long next_sample = 0;     // the next statistics sample's number (its time: number x interval)
+  int last_phase_slot = 0;  // the quarter period of the last phase sample
 };
+
+void put_stats(std::ostream& out, const CentrePlaneStats& s) {
+  put(out, s.samples);
+  put_vec(out, s.sum);
+  put_vec(out, s.sum_sq);
+  put_vec(out, s.sum_cross);
+  for (int p = 0; p < 4; ++p) {
+    put(out, s.phase_samples[p]);
+    put_vec(out, s.phase_sum[p]);
+    put_vec(out, s.phase_sum_sq[p]);
+    put_vec(out, s.phase_sum_cross[p]);
+  }
+}
+
+void get_stats(std::istream& in, CentrePlaneStats& s, std::uint64_t limit) {
+  s.samples = get<long>(in);
+  s.sum = get_vec<double>(in, limit);
+  s.sum_sq = get_vec<double>(in, limit);
+  s.sum_cross = get_vec<double>(in, limit);
+  for (int p = 0; p < 4; ++p) {
+    s.phase_samples[p] = get<long>(in);
+    s.phase_sum[p] = get_vec<double>(in, limit);
+    s.phase_sum_sq[p] = get_vec<double>(in, limit);
+    s.phase_sum_cross[p] = get_vec<double>(in, limit);
+  }
+}
 
 void save(const std::string& path, const Checkpoint& c) {
   const std::string tmp = path + ".tmp";
@@ -75,115 +113,70 @@ void save(const std::string& path, const Checkpoint& c) {
     put(out, c.state.solver_steps);
     put(out, c.state.voxel_time);
     put(out, c.frames);
-    put(out, c.stats.samples);
-    put_vec(out, c.stats.sum);
-    put_vec(out, c.stats.sum_sq);
-    for (int p = 0; p < 4; ++p) {
-      put(out, c.stats.phase_samples[p]);
-      put_vec(out, c.stats.phase_sum[p]);
-      put_vec(out, c.stats.phase_sum_sq[p]);
-    }
+    put_stats(out, c.stats);
     put_vec(out, c.state.populations);
+    put<std::uint8_t>(out, c.state.has_fine ? 1 : 0);
+    if (c.state.has_fine) {
+      put<std::uint8_t>(out, c.state.fine_started ? 1 : 0);
+      const FineRegion::State& f = c.state.fine;
+      put(out, f.time);
+      put(out, f.steps);
+      put(out, f.solver_steps);
+      put(out, f.voxel_time);
+      put_vec(out, f.populations);
+      put_vec(out, f.faces.cell_state);
+      put_vec(out, f.faces.values);
+      put_stats(out, c.fine_stats);
+    }
+    put_vec(out, c.probes.time);
+    put_vec(out, c.probes.u);
+    put(out, c.next_sample);
+    put(out, c.last_phase_slot);
     if (!out) throw TableError("writing checkpoint '" + tmp + "' failed (disk full?)");
   }
   fs::rename(tmp, path);  // atomic: a crash mid-write leaves the previous checkpoint
 }
 
-Checkpoint load(const std::string& path, std::uint64_t limit) {
+// limit: the most values a coarse field may have; fine_limit: a fine one
+Checkpoint load(const std::string& path, std::uint64_t limit, std::uint64_t fine_limit) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw TableError("cannot read checkpoint '" + path + "'");
   char magic[sizeof kMagic];
   in.read(magic, sizeof magic);
+  if (in && std::memcmp(magic, kOldMagic, sizeof kOldMagic) == 0)
+    throw TableError("checkpoint '" + path +
+                     "' was written by an older ship_lrm; delete it (or pass --no-resume --overwrite) to start afresh");
   if (!in || std::memcmp(magic, kMagic, sizeof kMagic) != 0) throw TableError("'" + path + "' is not a wake checkpoint");
   Checkpoint c;
-  const auto sig = get_vec<char>(in, 4096);
+  const auto sig = get_vec<char>(in, 1 << 20);
   c.signature.assign(sig.begin(), sig.end());
   c.state.steps = get<long>(in);
   c.state.solver_steps = get<long>(in);
   c.state.voxel_time = get<double>(in);
   c.frames = get<int>(in);
-  c.stats.samples = get<long>(in);
-  c.stats.sum = get_vec<double>(in, limit);
-  c.stats.sum_sq = get_vec<double>(in, limit);
-  for (int p = 0; p < 4; ++p) {
-    c.stats.phase_samples[p] = get<long>(in);
-    c.stats.phase_sum[p] = get_vec<double>(in, limit);
-    c.stats.phase_sum_sq[p] = get_vec<double>(in, limit);
-  }
+  get_stats(in, c.stats, limit);
   c.state.populations = get_vec<float>(in, 19 * limit);
+  c.state.has_fine = get<std::uint8_t>(in) != 0;
+  if (c.state.has_fine) {
+    c.state.fine_started = get<std::uint8_t>(in) != 0;
+    FineRegion::State& f = c.state.fine;
+    f.time = get<double>(in);
+    f.steps = get<long>(in);
+    f.solver_steps = get<long>(in);
+    f.voxel_time = get<double>(in);
+    f.populations = get_vec<float>(in, 19 * fine_limit);
+    f.faces.cell_state = get_vec<float>(in, 19 * fine_limit);
+    f.faces.values = get_vec<float>(in, 19 * fine_limit);
+    get_stats(in, c.fine_stats, fine_limit);
+  }
+  c.probes.time = get_vec<double>(in, std::uint64_t(1) << 32);
+  c.probes.u = get_vec<float>(in, std::uint64_t(1) << 34);
+  c.next_sample = get<long>(in);
+  c.last_phase_slot = get<int>(in);
   return c;
 }
 
-void write_csv(const std::string& path, const CentrePlaneStats& s, bool phases, double wind) {
-  std::ofstream out(path);
-  if (!out) throw TableError("cannot write '" + path + "'");
-  out << "x_m,z_m,solid,mean_u,mean_v,mean_w,tke";
-  if (phases)
-    for (int p = 0; p < 4; ++p) out << ",phase" << p << "_u,phase" << p << "_w,phase" << p << "_tke";
-  out << ",wind\n";
-  const auto m = s.mean(), k = s.tke();
-  std::array<std::vector<float>, 4> pm, pk;
-  if (phases)
-    for (int p = 0; p < 4; ++p) {
-      pm[p] = s.mean(p);
-      pk[p] = s.tke(p);
-    }
-  for (int kz = 0; kz < s.nz; ++kz)
-    for (int i = 0; i < s.nx; ++i) {
-      const std::size_t n = i + static_cast<std::size_t>(s.nx) * kz;
-      out << s.x[i] << "," << s.z[kz] << "," << int(s.solid[n]) << "," << m[3 * n] << "," << m[3 * n + 1] << "," << m[3 * n + 2] << ","
-          << k[n];
-      if (phases)
-        for (int p = 0; p < 4; ++p) out << "," << pm[p][3 * n] << "," << pm[p][3 * n + 2] << "," << pk[p][n];
-      out << "," << wind << "\n";
-    }
-}
-
 }  // namespace
-
-void CentrePlaneStats::add(const ShipWakeDomain::Plane& p, int phase) {
-  const std::size_t n = p.u.size();
-  nx = p.nx;
-  nz = p.nz;
-  x = p.x;
-  z = p.z;
-  solid = p.solid;
-  auto& s = phase < 0 ? sum : phase_sum[phase];
-  auto& q = phase < 0 ? sum_sq : phase_sum_sq[phase];
-  if (s.empty()) {
-    s.assign(n, 0.0);
-    q.assign(n, 0.0);
-  }
-  for (std::size_t k = 0; k < n; ++k) {
-    s[k] += p.u[k];
-    q[k] += double(p.u[k]) * p.u[k];
-  }
-  ++(phase < 0 ? samples : phase_samples[phase]);
-}
-
-std::vector<float> CentrePlaneStats::mean(int phase) const {
-  const auto& s = phase < 0 ? sum : phase_sum[phase];
-  const long c = phase < 0 ? samples : phase_samples[phase];
-  std::vector<float> m(s.size(), 0.0f);
-  for (std::size_t k = 0; k < s.size() && c > 0; ++k) m[k] = static_cast<float>(s[k] / c);
-  return m;
-}
-
-std::vector<float> CentrePlaneStats::tke(int phase) const {
-  const auto& s = phase < 0 ? sum : phase_sum[phase];
-  const auto& q = phase < 0 ? sum_sq : phase_sum_sq[phase];
-  const long c = phase < 0 ? samples : phase_samples[phase];
-  std::vector<float> k(s.size() / 3, 0.0f);
-  for (std::size_t p = 0; p < k.size() && c > 0; ++p) {
-    double e = 0;
-    for (int d = 0; d < 3; ++d) {
-      const double m = s[3 * p + d] / c;
-      e += std::max(0.0, q[3 * p + d] / c - m * m);
-    }
-    k[p] = static_cast<float>(0.5 * e);
-  }
-  return k;
-}
 
 std::string default_table_path() {
   if (const char* p = std::getenv("SHIP_LRM_WAKE_CACHE")) return std::string(p) + "/wake_default_v3.h5";
@@ -241,14 +234,58 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
   const int total_frames = static_cast<int>(std::floor(opt.duration / opt.frame_interval + 1e-9)) + 1;
   const auto* periodic = dynamic_cast<const SinusoidalMotion*>(motion.get());
   const double period = periodic ? 1.0 / periodic->params().frequency : 0.0;
+  FineRegion* fine = domain.fine();
+  if (fine && opt.domain.fine.start > startup + 1e-12)
+    throw lbm::ConfigError("wake: the fine region starts at " + std::to_string(opt.domain.fine.start) +
+                           " s, after the first frame and statistics sample (the start-up, " + std::to_string(startup) +
+                           " s); start it earlier");
 
   PrecomputeResult r;
   r.table = opt.out;
   r.xdmf = fs::path(opt.out).replace_extension(".xdmf").string();
-  r.centre_plane_csv = fs::path(opt.out).replace_extension("").string() + "_centre_plane.csv";
+  const std::string stem = fs::path(opt.out).replace_extension("").string();
+  r.centre_plane_csv = stem + "_centre_plane.csv";
+  if (fine) r.fine_centre_plane_csv = stem + "_fine_centre_plane.csv";
+  if (!opt.probes.empty()) r.probes_csv = stem + "_probes.csv";
   r.cells = domain.cells();
   r.dx = domain.units().dx();
   r.dt = dt;
+  r.fine_cells = fine ? fine->grid().cells() : 0;
+  r.fine_dx = fine ? fine->grid().dx : 0.0;
+
+  // the probes: each in the fluid of the finest level that covers it, before any step
+  ProbeSeries& probes = r.probes;
+  for (const auto& p : opt.probes) {
+    for (double v : p)
+      if (!std::isfinite(v)) throw lbm::ConfigError("wake: a probe point is not finite");
+    probes.points.push_back(p);
+  }
+  const auto probe_velocity = [&](const lbm::Fields& coarse, const lbm::Fields* fine_fields, const std::array<double, 3>& p,
+                                  std::array<double, 3>& u) {
+    const Vec3 q(p[0], p[1], p[2]);
+    if (fine && fine_fields && fine->velocity_at(*fine_fields, q, u)) return true;
+    if (fine && fine_fields) {  // inside the fine grid but at a solid: not the coarse value there either
+      const NodeGrid& g = fine->grid();
+      const Vec3 rel = (q - g.origin) / g.dx;
+      if (rel.x() >= 0 && rel.y() >= 0 && rel.z() >= 0 && rel.x() <= g.nx - 1 && rel.y() <= g.ny - 1 && rel.z() <= g.nz - 1) return false;
+    }
+    return domain.velocity_at(coarse, q, u);
+  };
+  if (!probes.points.empty()) {
+    const lbm::Fields c = domain.fields();
+    lbm::Fields f;
+    if (fine) f = fine->fields();
+    for (int k = 0; k < probes.probes(); ++k) {
+      std::array<double, 3> u{};
+      const auto& p = probes.points[k];
+      if (!probe_velocity(c, fine ? &f : nullptr, p, u))
+        throw lbm::ConfigError("wake: probe " + std::to_string(k) + " at (" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " +
+                               std::to_string(p[2]) +
+                               ") m (ship frame) is not in the fluid: inside or next to the ship or the sea, or "
+                               "outside the domain");
+    }
+  }
+
   const std::string ckpt = opt.out + ".ckpt";
   WakeTableInfo info = domain.table_info();
   info.frame_interval = opt.frame_interval;
@@ -260,47 +297,59 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
   // resume from a matching checkpoint, or start afresh
   std::unique_ptr<WakeTableWriter> writer;
   CentrePlaneStats& stats = r.stats;
+  CentrePlaneStats& fine_stats = r.fine_stats;
+  long resumed_next_sample = -1;
+  int resumed_phase_slot = 0;
   if (opt.resume && fs::exists(ckpt)) {
-    Checkpoint c = load(ckpt, domain.cells() * 3 + 16);
+    Checkpoint c = load(ckpt, domain.cells() * 3 + 16, r.fine_cells * 3 + 16);
     if (c.signature != sig)
       throw lbm::ConfigError("wake: checkpoint '" + ckpt + "' belongs to another run (" + c.signature +
                              "); delete it or choose another --out");
+    if (c.probes.u.size() != 3 * c.probes.time.size() * probes.points.size())
+      throw TableError("checkpoint '" + ckpt + "': its probe series does not match the probes");
     domain.restore(c.state);
     writer = std::make_unique<WakeTableWriter>(opt.out, info, true, c.frames);
     stats = std::move(c.stats);
+    fine_stats = std::move(c.fine_stats);
+    probes.time = std::move(c.probes.time);
+    probes.u = std::move(c.probes.u);
+    resumed_next_sample = c.next_sample;
+    resumed_phase_slot = c.last_phase_slot;
     r.resumed = true;
   } else {
     writer = std::make_unique<WakeTableWriter>(opt.out, info, false, 0);
   }
   // the geometry of the statistics (on a resume the sums came from the checkpoint)
-  {
-    const auto pl = domain.centre_plane(domain.fields());
-    stats.nx = pl.nx;
-    stats.nz = pl.nz;
-    stats.x = pl.x;
-    stats.z = pl.z;
-    stats.solid = pl.solid;
-    if (stats.sum.empty()) {
-      stats.sum.assign(pl.u.size(), 0.0);
-      stats.sum_sq.assign(pl.u.size(), 0.0);
-    }
-  }
+  stats.set_geometry(domain.centre_plane(domain.fields()));
+  if (fine) fine_stats.set_geometry(domain.fine_centre_plane(fine->fields()));
   const auto t0 = Clock::now();
   auto last_ckpt = t0, last_report = t0;
   const long start_step = domain.steps();
+  const double coarse_s0 = domain.coarse_seconds(), fine_s0 = domain.fine_seconds();
+  // (a resumed run continues the checkpoint's counts: a sample taken up to half a step before its
+  // time is not taken again after the checkpoint)
+  long next_sample = static_cast<long>(std::ceil(startup / stats_interval - 1e-9));
+  int last_phase_slot = periodic ? static_cast<int>(std::floor(domain.time() / (0.25 * period))) : 0;
+  if (r.resumed) {
+    next_sample = resumed_next_sample;
+    last_phase_slot = resumed_phase_slot;
+  }
   const auto checkpoint = [&] {
     Checkpoint c;
     c.signature = sig;
     c.state = domain.state();
     c.frames = writer->frames();
     c.stats = stats;
+    c.fine_stats = fine_stats;
+    c.probes.time = probes.time;
+    c.probes.u = probes.u;
+    c.next_sample = next_sample;
+    c.last_phase_slot = last_phase_slot;
     save(ckpt, c);
     last_ckpt = Clock::now();
   };
   const auto frame_due = [&](int k) { return startup + k * opt.frame_interval; };
-  long next_sample = static_cast<long>(std::ceil(startup / stats_interval - 1e-9));
-  if (domain.time() > startup) next_sample = static_cast<long>(std::floor(domain.time() / stats_interval + 1e-9)) + 1;
-  int last_phase_slot = periodic ? static_cast<int>(std::floor(domain.time() / (0.25 * period))) : 0;
+  const std::size_t cells_per_step = domain.cells() + (fine ? fine->grid().cells() * fine->config().ratio : 0);
   while (domain.steps() < total_steps && writer->frames() < total_frames) {
     if ((opt.stop && opt.stop->load()) || (opt.stop_at_step >= 0 && domain.steps() >= opt.stop_at_step)) {
       checkpoint();
@@ -322,18 +371,35 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
     }
     if (frame || sample || phase >= 0) {
       const lbm::Fields f = domain.fields();
+      lbm::Fields ff;
+      if (fine) ff = fine->fields();
       if (frame) {
-        std::vector<float> u, rho;
+        std::vector<float> u, rho, fu, frho;
         domain.table_frame(f, u, rho);
-        writer->append(u, rho);
+        if (fine) fine->table_frame(ff, opt.domain.density, fu, frho);
+        writer->append(u, rho, fu, frho);
       }
       if (sample || phase >= 0) {
         const auto pl = domain.centre_plane(f);
+        PlaneSample fpl;
+        if (fine) fpl = domain.fine_centre_plane(ff);
         if (sample) {
           stats.add(pl, -1);
+          if (fine) fine_stats.add(fpl, -1);
+          if (!probes.points.empty()) {
+            probes.time.push_back(t);
+            for (const auto& p : probes.points) {
+              std::array<double, 3> u{};
+              if (!probe_velocity(f, fine ? &ff : nullptr, p, u)) u.fill(std::numeric_limits<double>::quiet_NaN());
+              for (double v : u) probes.u.push_back(static_cast<float>(v));
+            }
+          }
           ++next_sample;
         }
-        if (phase >= 0) stats.add(pl, phase);
+        if (phase >= 0) {
+          stats.add(pl, phase);
+          if (fine) fine_stats.add(fpl, phase);
+        }
       }
     }
     const auto now = Clock::now();
@@ -345,7 +411,7 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
       const double fraction = static_cast<double>(domain.steps()) / total_steps;
       const double per_step = done > 0 ? wall / done : 0;
       opt.progress(
-          {fraction, t, per_step * (total_steps - domain.steps()), done * domain.cells() / std::max(wall, 1e-9) / 1e6, writer->frames()});
+          {fraction, t, per_step * (total_steps - domain.steps()), done * cells_per_step / std::max(wall, 1e-9) / 1e6, writer->frames()});
     }
   }
   r.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -353,14 +419,29 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
   r.simulated = domain.time();
   r.frames = writer->frames();
   r.rebuilds = domain.rebuilds();
-  r.mlups = (domain.steps() - start_step) * static_cast<double>(domain.cells()) / std::max(r.wall_seconds, 1e-9) / 1e6;
+  const long done = domain.steps() - start_step;
+  r.mlups = done * static_cast<double>(cells_per_step) / std::max(r.wall_seconds, 1e-9) / 1e6;
+  r.coarse_seconds = domain.coarse_seconds() - coarse_s0;
+  r.fine_seconds = domain.fine_seconds() - fine_s0;
+  r.coarse_mlups = done * static_cast<double>(domain.cells()) / std::max(r.coarse_seconds, 1e-9) / 1e6;
+  if (fine) r.fine_mlups = done * static_cast<double>(fine->grid().cells() * fine->config().ratio) / std::max(r.fine_seconds, 1e-9) / 1e6;
   // statistics: in the table and as CSV for the plots
-  const std::vector<int> dims3{stats.nz, stats.nx, 3}, dims1{stats.nz, stats.nx};
+  const std::vector<int> dims3{stats.nz, stats.nx, 3}, dims6{stats.nz, stats.nx, 6}, dims1{stats.nz, stats.nx};
   writer->write_statistic("centre_plane_mean_velocity", stats.mean(), dims3);
+  writer->write_statistic("centre_plane_reynolds_stress", stats.stress(), dims6);
   writer->write_statistic("centre_plane_tke", stats.tke(), dims1);
   writer->write_statistic("centre_plane_samples", {static_cast<float>(stats.samples)}, {1});
+  if (fine) {
+    const std::vector<int> f3{fine_stats.nz, fine_stats.nx, 3}, f6{fine_stats.nz, fine_stats.nx, 6}, f1{fine_stats.nz, fine_stats.nx};
+    writer->write_statistic("fine_centre_plane_mean_velocity", fine_stats.mean(), f3);
+    writer->write_statistic("fine_centre_plane_reynolds_stress", fine_stats.stress(), f6);
+    writer->write_statistic("fine_centre_plane_tke", fine_stats.tke(), f1);
+  }
   writer->close();
-  write_csv(r.centre_plane_csv, stats, periodic != nullptr && stats.phase_samples[0] > 0, opt.domain.wind);
+  const bool phases = periodic != nullptr && stats.phase_samples[0] > 0;
+  write_plane_csv(r.centre_plane_csv, stats, phases, opt.domain.wind);
+  if (fine) write_plane_csv(r.fine_centre_plane_csv, fine_stats, phases, opt.domain.wind);
+  if (!probes.points.empty()) write_probe_series_csv(r.probes_csv, probes);
   if (!r.interrupted) {
     std::error_code ec;
     fs::remove(ckpt, ec);

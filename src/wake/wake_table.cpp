@@ -55,6 +55,10 @@ void WakeTable::read_box(int frame, const std::array<int, 3>& lo, const std::arr
 }
 
 void WakeTable::read_frame(int frame, std::vector<float>& velocity, std::vector<float>& density) const {
+  constexpr std::size_t kMaxFramePoints = std::size_t(1) << 26;  // 1 GB of float32 values
+  if (info_.points() > kMaxFramePoints)
+    throw TableError(source_->name() + ": a whole frame of its served grid has " + std::to_string(info_.points()) +
+                     " points; read boxes of it (read_box)");
   read_box(frame, {0, 0, 0}, info_.shape, velocity, density);
 }
 

@@ -12,11 +12,13 @@ namespace {
 struct WakeTableWriter::Impl {};
 WakeTableWriter::WakeTableWriter(const std::string&, const WakeTableInfo&, bool, int) { unavailable(); }
 WakeTableWriter::~WakeTableWriter() = default;
-void WakeTableWriter::append(const std::vector<float>&, const std::vector<float>&) { unavailable(); }
+void WakeTableWriter::append(const std::vector<float>&, const std::vector<float>&, const std::vector<float>&, const std::vector<float>&) {
+  unavailable();
+}
 void WakeTableWriter::write_statistic(const std::string&, const std::vector<float>&, const std::vector<int>&) { unavailable(); }
 void WakeTableWriter::close() {}
 void WakeTableWriter::write_xdmf() const {}
 
-std::unique_ptr<WindowSource> open_table_file(const std::string&, WakeTableInfo&) { unavailable(); }
+std::unique_ptr<WindowSource> open_table_file(const std::string&, WakeTableInfo&, WakeTableInfo*) { unavailable(); }
 
 }  // namespace ship_lrm::wake

@@ -27,6 +27,10 @@ struct FineRegionConfig {
   // The box, in ship lengths: x from `aft` to `fore` (ship frame, forward from the hangar door),
   // |y| up to `half_width`, from `top` above the waterline down to the first coarse node in the sea.
   double aft = -0.42, fore = 0.35, half_width = 0.15, top = 0.3;
+  // When the region starts (s), from the coarse air then: before it the coarse domain runs alone,
+  // so that a long start-up costs only the coarse steps (the region then needs a few of its own
+  // flow-through times to develop its turbulence).
+  double start = 0;
   bool enabled() const { return ratio > 0; }
 };
 
@@ -59,6 +63,13 @@ class FineRegion {
   lbm::Solver& solver() { return *solver_; }
   lbm::Fields fields() { return solver_->fields(); }
   const std::vector<std::uint8_t>& owner() const { return owner_; }  // kFluidNode, kSeaNode, kShipNode per fine node
+  // The whole fine grid in physical units from `f` (fields()), as the table's fine level stores it:
+  // velocity (m/s, mean frame, 3 per node, x fastest), density (kg/m^3: the lattice density times
+  // `free_density`); inside the ship its velocity, in the sea at rest, both at the free density.
+  void table_frame(const lbm::Fields& f, double free_density, std::vector<float>& velocity, std::vector<float>& density) const;
+  // Velocity (m/s, mean frame) at ship-frame point p from `f`, trilinear between the fine nodes;
+  // false outside the fine grid or where the node nearest p is not fluid (fluid_velocity_at).
+  bool velocity_at(const lbm::Fields& f, const Vec3& p, std::array<double, 3>& u) const;
 
   // Checkpoint (see ShipWakeDomain::State): with the open faces' memory, so that a restored region
   // continues bit for bit.

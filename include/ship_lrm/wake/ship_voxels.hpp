@@ -39,6 +39,13 @@ std::vector<std::uint8_t> voxelise_ship(const NodeGrid& grid, const ShipGeometry
 // The hull's rigid motion at time t in the grid's lattice units (time step dt in s).
 lbm::WallMotion hull_wall_motion(const NodeGrid& grid, const ShipMotion& motion, double t, double dt);
 
+// The velocity at point p (m/s: lattice velocities `u`, 3 per node, times `scale` = dx / dt),
+// trilinear between the grid's nodes, a wall node of p's cell counted as air at rest on it (no slip
+// in the mean frame: within one cell of a moving hull this leaves out the hull's own velocity); false
+// outside the grid or when the node nearest p is not fluid (a probe in the ship or the sea).
+bool fluid_velocity_at(const NodeGrid& grid, const std::vector<std::uint8_t>& owner, const float* u, double scale, const Vec3& p,
+                       std::array<double, 3>& out);
+
 // How far (m) the hull's box has moved between times t0 and t1: the largest corner displacement.
 double hull_displacement(const ShipMotion& motion, const std::array<Vec3, 8>& box, double t0, double t1);
 

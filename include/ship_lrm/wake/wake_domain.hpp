@@ -22,6 +22,7 @@
 #include "ship_lrm/wake/ship_geometry.hpp"
 #include "ship_lrm/wake/ship_motion.hpp"
 #include "ship_lrm/wake/ship_voxels.hpp"
+#include "ship_lrm/wake/wake_statistics.hpp"
 #include "ship_lrm/wake/wake_table.hpp"
 
 namespace ship_lrm::wake {
@@ -83,25 +84,32 @@ class ShipWakeDomain {
   // Advance n steps; the hull moves with the ship motion, and the fine region (if any) follows each
   // step with its own `ratio` steps, fed from this domain's air.
   void step(long n = 1);
-  // The fine region, or null without one (WakeConfig::fine).
+  // The fine region, or null without one (WakeConfig::fine); fine_started(): it runs (from
+  // FineRegionConfig::start on; before, its fields are its unstarted lattice's).
   FineRegion* fine() { return fine_.get(); }
   const FineRegion* fine() const { return fine_.get(); }
+  bool fine_started() const { return fine_started_; }
+  // Wall-clock seconds spent in each level's steps so far (the fine level's with its face feed).
+  double coarse_seconds() const { return coarse_seconds_; }
+  double fine_seconds() const { return fine_seconds_; }
 
   // The lattice fields now (one copy serves table_frame and centre_plane in the same step).
   lbm::Fields fields() { return solver_->fields(); }
-  // The tabulated region (grid = lattice nodes) and one frame of it in physical units from `f`
+  // The tabulated region (grid = lattice nodes; with a fine region its level in `fine`) and one frame of it in physical units from `f`
   // (fields()): velocity (3 per point) in m/s in the mean frame, density in kg/m^3; inside solids the
   // body's velocity and the free density.
-  WakeTableInfo table_info() const;
+  WakeTableInfo table_info() const;  // GeometryError when the fine region reaches outside the tabulated region
   void table_frame(const lbm::Fields& f, std::vector<float>& velocity, std::vector<float>& density) const;
-  // The centre plane y = 0: velocity (m/s, 3 per point, x fastest then z) and a solid flag.
-  struct Plane {
-    int nx = 0, nz = 0;
-    std::vector<float> u;
-    std::vector<std::uint8_t> solid;
-    std::vector<double> x, z;  // ship-frame coordinates of the columns and rows
-  };
+  // The fine region's frame now (table_info().fine; empty without a fine region).
+  void fine_table_frame(std::vector<float>& velocity, std::vector<float>& density);
+  // Velocity (m/s, mean frame) at ship-frame point p from `f` (fields()), trilinear between nodes;
+  // false outside the domain or at a solid (see fluid_velocity_at).
+  bool velocity_at(const lbm::Fields& f, const Vec3& p, std::array<double, 3>& u) const;
+  // The centre plane y = 0: velocity (m/s, 3 per point, x fastest then z) and a solid flag; the fine
+  // region's from its fields (`f`: fine()->fields()).
+  using Plane = PlaneSample;
   Plane centre_plane(const lbm::Fields& f) const;
+  Plane fine_centre_plane(const lbm::Fields& f) const;
 
   // Checkpoint: the step count, the pose the walls were voxelised at and the populations. restore()
   // re-voxelises at that pose and puts the populations back (ConfigError when they do not fit).
@@ -110,7 +118,7 @@ class ShipWakeDomain {
     long solver_steps = 0;  // since the lattice was last built (the population layout's parity)
     double voxel_time = 0;
     std::vector<float> populations;
-    bool has_fine = false;
+    bool has_fine = false, fine_started = false;
     FineRegion::State fine;
   };
   State state();
@@ -126,6 +134,8 @@ class ShipWakeDomain {
   long steps_ = 0;
   double voxel_time_ = 0;
   std::size_t rebuilds_ = 0, ship_cells_ = 0;
+  double coarse_seconds_ = 0, fine_seconds_ = 0;
+  bool fine_started_ = false;
   std::array<Vec3, 8> hull_box_;     // corners of the hull's box (ship frame)
   std::vector<std::uint8_t> owner_;  // 0 fluid, 1 sea, 2 ship
   std::unique_ptr<lbm::Solver> solver_;
@@ -134,6 +144,7 @@ class ShipWakeDomain {
   std::vector<float> window_;                // their air after the last step (m/s)
   std::vector<std::uint8_t> voxelise(double t) const;
   std::vector<float> fine_window();
+  void start_fine();  // the fine region from the coarse air now
   void rebuild(double t, bool carry);
   lbm::WallMotion hull_motion(double t) const;
 };

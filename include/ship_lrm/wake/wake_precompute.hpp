@@ -1,7 +1,7 @@
-// The ship-wake precompute (thesis 6.2, 6.3, 7): runs a ShipWakeDomain through a start-up
-// period, then writes the tabulated region to a wake table at a set interval, and keeps the
-// centre-plane statistics of thesis figs. 7.2, 7.3 (mean velocity, turbulent kinetic energy) and, for
-// a periodic ship motion, their phase averages at 0, 1/4, 1/2 and 3/4 of the period (fig. 7.6).
+// The ship-wake precompute (thesis 6.2, 6.3, 7): runs a ShipWakeDomain (and its fine region, if
+// any) through a start-up period, then writes the tabulated region (and the fine level: a nested
+// table) to a wake table at a set interval, and keeps the statistics of wake_statistics.hpp: the
+// centre plane of each level (thesis figs. 7.2, 7.3, 7.6) and the time series at probe points.
 // Checkpoints at a wall-clock interval (and when asked to stop) let a stopped run resume without
 // losing more than that interval; the table then keeps the frames the checkpoint had written.
 #pragma once
@@ -12,18 +12,22 @@
 #include <vector>
 
 #include "ship_lrm/wake/wake_domain.hpp"
+#include "ship_lrm/wake/wake_statistics.hpp"
 
 namespace ship_lrm::wake {
 
 struct PrecomputeOptions {
   WakeConfig domain;
-  std::string ship = "natogd";              // natogd | sfs2 | FILE.stl
-  std::string scale = "full";               // model (1/50) | full
-  std::string motion = "static";            // static | pitch | heave | approach | FILE.csv
-  double startup = -1;                      // s; < 0: the time the wind takes to cross the domain once
-  double duration = 30;                     // s of frames after the start-up
-  double frame_interval = 0.02;             // s (thesis 6.3)
-  double stats_interval = -1;               // s between centre-plane samples; < 0: the frame interval
+  std::string ship = "natogd";    // natogd | sfs2 | FILE.stl
+  std::string scale = "full";     // model (1/50) | full
+  std::string motion = "static";  // static | pitch | heave | approach | FILE.csv
+  double startup = -1;            // s; < 0: the time the wind takes to cross the domain once
+  double duration = 30;           // s of frames after the start-up
+  double frame_interval = 0.02;   // s (thesis 6.3)
+  double stats_interval = -1;     // s between statistics samples (centre planes, probes); < 0: the frame interval
+  // Probe points (m, ship frame of the mean pose: x forward, y starboard, z down), sampled from the
+  // finest level that covers each; ConfigError before any step for a probe that is not in the fluid.
+  std::vector<std::array<double, 3>> probes;
   bool half_precision = true;               // float16 on disk
   std::string out;                          // table path (.h5); the side-car .xdmf and the checkpoint .ckpt beside it
   double checkpoint_seconds = 60;           // wall-clock interval between checkpoints
@@ -37,23 +41,9 @@ struct PrecomputeOptions {
   std::function<void(const Progress&)> progress;  // called about once a second
 };
 
-struct CentrePlaneStats {
-  int nx = 0, nz = 0;
-  std::vector<double> x, z;  // ship-frame coordinates
-  std::vector<std::uint8_t> solid;
-  long samples = 0;
-  std::vector<double> sum, sum_sq;  // 3 per point
-  // phase ensembles (periodic motion only): 4 of them
-  std::array<long, 4> phase_samples{0, 0, 0, 0};
-  std::array<std::vector<double>, 4> phase_sum, phase_sum_sq;
-  void add(const ShipWakeDomain::Plane& p, int phase = -1);  // phase -1: the overall statistics, 0..3: that phase's ensemble
-  // mean velocity (3 per point) and TKE = (var u + var v + var w) / 2 of the samples (or one phase)
-  std::vector<float> mean(int phase = -1) const;
-  std::vector<float> tke(int phase = -1) const;
-};
-
 struct PrecomputeResult {
   std::string table, xdmf, centre_plane_csv;
+  std::string fine_centre_plane_csv, probes_csv;  // with a fine region; with probes
   int frames = 0;
   long steps = 0;
   double simulated = 0, wall_seconds = 0, mlups = 0;
@@ -61,6 +51,11 @@ struct PrecomputeResult {
   std::size_t cells = 0, rebuilds = 0;
   double dx = 0, dt = 0;
   CentrePlaneStats stats;
+  // the fine region (fine_cells 0 without one), and the wall time of each level's steps
+  std::size_t fine_cells = 0;
+  double fine_dx = 0, coarse_seconds = 0, fine_seconds = 0, coarse_mlups = 0, fine_mlups = 0;
+  CentrePlaneStats fine_stats;
+  ProbeSeries probes;
 };
 
 // Throws lbm::ConfigError / GeometryError / MotionError / TableError for bad input before any step.

@@ -6,13 +6,18 @@
 // WindowSource, from another process (wake_table.cpp: windows and interpolation; wake_table_hdf5.cpp:
 // the file).
 //
-// Layout (format version 1):
+// Layout (format version 1; version 2 adds the fine level of a nested table):
 //   /velocity  [frames][nz][ny][nx][3]  m/s, mean frame (ship_motion.hpp), x forward, y starboard, z down
 //   /density   [frames][nz][ny][nx]     kg/m^3
 //   attributes of / : format_version, generator, origin[3] (m, ship frame of the mean pose, grid point
 //     0), spacing (m), shape[3] (nx, ny, nz), frame_interval (s), start_time (s, time of frame 0),
 //     free_stream[3] (m/s), free_density (kg/m^3), ship, scale, motion, units ("m, s, m/s, kg/m^3"),
 //     frame ("mean ship frame, FRD, origin at the hangar-door base")
+//   /fine/velocity, /fine/density  a finer level over a box of the grid (nested tables, version 2): the
+//     same frames at `ratio` times the resolution; attributes of /fine: ratio, lo[3] (the coarse grid
+//     point of its first point), shape[3], origin[3], spacing, start_time, frame_interval, seam[6]
+//     (the faces x-, x+, y-, y+, z-, z+ blended into the coarse grid), seam_cells. The reader serves
+//     both levels as one grid at the fine spacing over the coarse box (nested_table.hpp).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -31,8 +36,22 @@ class TableError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-constexpr int kWakeTableFormatVersion = 1;
+constexpr int kWakeTableFormatVersion = 2;       // written for a nested table
+constexpr int kWakeTableSingleLevelVersion = 1;  // written for a single-level table; both are read
 constexpr const char* kWakeTableUnits = "m, s, m/s, kg/m^3";
+
+// The finer level of a nested table: the coarse grid points lo .. lo + (shape - 1) / ratio, each
+// coarse cell refined `ratio` times. seam: the faces (x-, x+, y-, y+, z-, z+) where the reader blends
+// the fine values into the coarse ones over `seam_cells` coarse cells (a face on the sea or on the
+// coarse grid's boundary has nothing to blend with and is left out).
+struct WakeTableLevel {
+  int ratio = 0;  // 0: no fine level
+  std::array<int, 3> lo{0, 0, 0};
+  std::array<int, 3> shape{0, 0, 0};
+  std::array<int, 6> seam{1, 1, 1, 1, 1, 1};
+  double seam_cells = 2;
+  std::size_t points() const { return static_cast<std::size_t>(shape[0]) * shape[1] * shape[2]; }
+};
 
 struct WakeTableInfo {
   std::array<double, 3> origin{0, 0, 0};  // m, grid point (0, 0, 0)
@@ -45,6 +64,9 @@ struct WakeTableInfo {
   std::string ship, scale, motion;
   bool half_precision = true;  // float16 on disk
   int frames = 0;              // written so far (reader: in the file)
+  // A nested table's fine level. Written and stored: the grid above is the coarse one. Served
+  // (WakeTable::info()): the grid above is the served one at the fine spacing, `fine` as stored.
+  WakeTableLevel fine;
   std::size_t points() const { return static_cast<std::size_t>(shape[0]) * shape[1] * shape[2]; }
   double end_time() const { return start_time + (frames - 1) * frame_interval; }
 };
@@ -58,8 +80,10 @@ class WakeTableWriter {
   ~WakeTableWriter();
   WakeTableWriter(const WakeTableWriter&) = delete;
   WakeTableWriter& operator=(const WakeTableWriter&) = delete;
-  // velocity: 3 per point (x fastest, then y, then z), density: 1 per point.
-  void append(const std::vector<float>& velocity, const std::vector<float>& density);
+  // velocity: 3 per point (x fastest, then y, then z), density: 1 per point; a nested table's fine
+  // level (info.fine) takes its frame at the same time in fine_velocity and fine_density.
+  void append(const std::vector<float>& velocity, const std::vector<float>& density, const std::vector<float>& fine_velocity = {},
+              const std::vector<float>& fine_density = {});
   // Extra float datasets (statistics), written under /statistics/<name>.
   void write_statistic(const std::string& name, const std::vector<float>& values, const std::vector<int>& dims);
   int frames() const { return info_.frames; }
@@ -93,9 +117,10 @@ class WindowSource {
   virtual std::string name() const = 0;  // for messages: the file, or where the windows come from
 };
 
-// Opens an HDF5 table file and checks its format (TableError naming what is wrong): its windows, and
-// its attributes in `info` (WakeTable checks those).
-std::unique_ptr<WindowSource> open_table_file(const std::string& path, WakeTableInfo& info);
+// Opens an HDF5 table file and checks its format (TableError naming what is wrong): its windows on the
+// served grid (a nested table's levels composed, nested_table.hpp), the served grid's attributes in
+// `info` (WakeTable checks those) and, if asked, the file's levels as stored in `stored`.
+std::unique_ptr<WindowSource> open_table_file(const std::string& path, WakeTableInfo& info, WakeTableInfo* stored = nullptr);
 
 class WakeTable {
  public:
@@ -107,6 +132,7 @@ class WakeTable {
   ~WakeTable();
   WakeTable(const WakeTable&) = delete;
   WakeTable& operator=(const WakeTable&) = delete;
+  // The served grid (a nested table: the fine spacing over the coarse box; info().fine as stored).
   const WakeTableInfo& info() const { return info_; }
   bool covers(double t) const { return t >= info_.start_time && t <= info_.end_time(); }
   // Samples at n points (xyz interleaved, m, mean frame) at time t. All points must lie in a box that
