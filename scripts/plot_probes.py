@@ -11,7 +11,9 @@ pK_u, pK_v, pK_w per probe, m/s, ship frame) and writes beside it
   FILE_probes_histogram.csv  probe, component, bin_low, bin_high, density (1/(m/s)): 40 bins over
                              the component's range
   FILE_probes.png            both, one row per probe
-Samples where a probe was not in the fluid (NaN) are left out.
+and prints per probe the mean, variance and TKE (with --wind also TKE / U^2 and its standard error
+from five batch means). --window T0,T1 restricts everything to samples with T0 <= t <= T1 (two runs
+compared over the same averaging time). Samples where a probe was not in the fluid (NaN) are left out.
 """
 import argparse
 import os
@@ -25,6 +27,7 @@ def main():
     ap.add_argument("csv")
     ap.add_argument("--wind", type=float, default=None, help="wind speed U (m/s): spectra also as f U^-2 and axes in U")
     ap.add_argument("--png", default=None)
+    ap.add_argument("--window", default=None, help="T0,T1: only the samples in this time window (s)")
     a = ap.parse_args()
     try:
         data = np.genfromtxt(a.csv, delimiter=",", names=True)
@@ -37,10 +40,36 @@ def main():
     if not probes or data.size < 8:
         sys.exit(f"plot_probes.py: {a.csv} holds no probe series of at least 8 samples")
     t = np.atleast_1d(data["time_s"])
+    if a.window:
+        try:
+            t0, t1 = (float(v) for v in a.window.split(","))
+        except ValueError:
+            sys.exit(f"plot_probes.py: --window must be T0,T1, got '{a.window}'")
+        keep = (t >= t0) & (t <= t1)
+        if keep.sum() < 8:
+            sys.exit(f"plot_probes.py: fewer than 8 samples in the window {a.window}")
+        data, t = np.atleast_1d(data)[keep], t[keep]
     dt = float(np.median(np.diff(t)))
     if not dt > 0:
         sys.exit(f"plot_probes.py: {a.csv}: the times do not increase")
     from scipy.signal import welch
+
+    print(f"{len(t)} samples from {t[0]:.4f} to {t[-1]:.4f} s")
+    for p in probes:
+        u = np.stack([np.atleast_1d(data[f"p{p}_{c}"]) for c in "uvw"], axis=1)
+        u = u[np.all(np.isfinite(u), axis=1)]
+        if len(u) < 2:
+            print(f"probe {p}: no samples in the fluid")
+            continue
+        var = u.var(axis=0)
+        k = 0.5 * var.sum()
+        fmt = lambda v: "[" + ", ".join(f"{x:.4g}" for x in v) + "]"
+        line = f"probe {p}: mean {fmt(u.mean(axis=0))} m/s, variance {fmt(var)} m^2/s^2, TKE {k:.4g} m^2/s^2"
+        if a.wind:
+            batches = [0.5 * b.var(axis=0).sum() for b in np.array_split(u, 5)]
+            err = np.std(batches, ddof=1) / np.sqrt(5)
+            line += f", TKE/U^2 {k / a.wind ** 2:.5g} +- {err / a.wind ** 2:.2g}"
+        print(line)
 
     stem = os.path.splitext(a.csv)[0]
     psd_cols, hist_rows, freqs = {}, [], None

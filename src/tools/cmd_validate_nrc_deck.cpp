@@ -1,5 +1,6 @@
 // `ship_lrm validate nrc-deck`: the NRC wind-tunnel deck case with a fine deck region (nrc_deck.hpp),
 // its result as one JSON object (stdout and OUT/nrc_deck.json).
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <csignal>
@@ -8,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "commands.hpp"
 #include "ship_lrm/wake/nrc_deck.hpp"
@@ -32,6 +34,7 @@ nlohmann::json nrc_deck_json(const wake::NrcDeckResult& r) {
   j["sample_interval_s"] = r.options.sample_interval;
   j["wind_m_s"] = r.wind;
   j["quick"] = r.options.quick;
+  j["fine_box"] = {{"aft", r.run_box[0]}, {"fore", r.run_box[1]}, {"half_width", r.run_box[2]}, {"top", r.run_box[3]}};
   j["frame"] = "wind tunnel (thesis 7.1): origin at the bottom of the hangar door on the centreline, x aft, y starboard, z up; model scale";
   j["probes"] = nlohmann::json::array();
   for (const auto& p : r.probes) {
@@ -71,6 +74,7 @@ std::function<int()> add_nrc_deck_command(CLI::App& validate) {
   struct Opts {
     wake::NrcDeckOptions run;
     std::string probes, backend = "auto", out;
+    std::vector<double> box;
     bool json = false, overwrite = false;
   };
   auto o = std::make_shared<Opts>();
@@ -90,6 +94,12 @@ std::function<int()> add_nrc_deck_command(CLI::App& validate) {
   cmd->add_option("--startup", o->run.startup, "start-up before the statistics, s (default: the wind's time across the wake domain)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--quick", o->run.quick, "the CI variant: 64 cells per length, 0.3 s of statistics (laminar: checks the pipeline)");
+  cmd->add_option("--fine-box", o->box,
+                  "the fine region, ship lengths: AFT,FORE,HALF_WIDTH,TOP (default -0.3,0.8,0.13,0.31: the whole superstructure; a moving "
+                  "ship's fore face goes "
+                  "past the bow)")
+      ->delimiter(',')
+      ->expected(4);
   cmd->add_option("--probes", o->probes, "more probes after the thesis' two: a CSV of x,y,z (m, wind-tunnel frame, model scale)");
   cmd->add_option("--backend", o->backend, "cpu, cuda or auto")->check(CLI::IsMember({"cpu", "cuda", "auto"}))->capture_default_str();
   cmd->add_option("--out", o->out, "folder for the table, the CSVs and nrc_deck.json (default nrc-deck-MOTION-NCELLS)");
@@ -104,6 +114,7 @@ std::function<int()> add_nrc_deck_command(CLI::App& validate) {
     }
     wake::nest_resolution(run.cells_per_length);  // ConfigError before anything is written
     run.backend = lbm::parse_backend(o->backend);
+    if (!o->box.empty()) std::copy(o->box.begin(), o->box.end(), run.box.begin());
     if (!o->probes.empty()) run.extra_probes = wake::read_probe_csv(o->probes);
     run.out_dir = o->out.empty() ? "nrc-deck-" + run.motion + "-" + std::to_string(run.cells_per_length) : o->out;
     const std::filesystem::path table =

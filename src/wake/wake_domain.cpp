@@ -192,7 +192,9 @@ void ShipWakeDomain::step(long n) {
 WakeTableInfo ShipWakeDomain::table_info() const {
   const double N = cfg_.cells_per_length, l = ship_->datum().length;
   const int jc = (ny_ - 1) / 2, half = static_cast<int>(std::lround(0.5 * cfg_.table_width * N));
-  const int i1 = std::min(nx_ - 1, static_cast<int>(std::lround((ship_->datum().stem_x - origin_.x()) / units_.dx())));
+  int i1 = std::min(nx_ - 1, static_cast<int>(std::lround((ship_->datum().stem_x - origin_.x()) / units_.dx())));
+  // with a fine region that reaches past the stem (a moving ship's must), the table reaches as far
+  if (fine_) i1 = std::min(nx_ - 1, std::max(i1, fine_->window_lo()[0] + (fine_->grid().nx - 1) / fine_->config().ratio));
   const int k0 = std::clamp(static_cast<int>(std::lround(cfg_.table_top * l / units_.dx())), 0, nz_ - 2);
   WakeTableInfo info;
   const Vec3 o = position(0, jc - half, k0);
@@ -215,7 +217,7 @@ WakeTableInfo ShipWakeDomain::table_info() const {
     // the table stores the fine grid inside its coarse box
     for (int d = 0; d < 3; ++d)
       if (info.fine.lo[d] < 0 || info.fine.lo[d] + (info.fine.shape[d] - 1) / info.fine.ratio > info.shape[d] - 1)
-        throw GeometryError("wake: the fine region reaches outside the tabulated region (x from the outflow face to the stem, |y| <= " +
+        throw GeometryError("wake: the fine region reaches outside the tabulated region (x from the outflow face forward, |y| <= " +
                             std::to_string(0.5 * cfg_.table_width) + " ship lengths, from " + std::to_string(cfg_.table_top) +
                             " ship lengths below the top down); shrink it or widen the table");
   }

@@ -349,7 +349,14 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
     last_ckpt = Clock::now();
   };
   const auto frame_due = [&](int k) { return startup + k * opt.frame_interval; };
-  const std::size_t cells_per_step = domain.cells() + (fine ? fine->grid().cells() * fine->config().ratio : 0);
+  // cell updates so far (the fine region's from its start)
+  const long fine_steps0 = fine ? fine->steps() : 0;
+  const auto updates = [&] {
+    return static_cast<double>(domain.steps() - start_step) * domain.cells() +
+           (fine ? static_cast<double>(fine->steps() - fine_steps0) * fine->grid().cells() : 0.0);
+  };
+  long report_steps = domain.steps();
+  double report_updates = 0;
   while (domain.steps() < total_steps && writer->frames() < total_frames) {
     if ((opt.stop && opt.stop->load()) || (opt.stop_at_step >= 0 && domain.steps() >= opt.stop_at_step)) {
       checkpoint();
@@ -404,14 +411,14 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
     }
     const auto now = Clock::now();
     if (std::chrono::duration<double>(now - last_ckpt).count() >= opt.checkpoint_seconds) checkpoint();
-    if (opt.progress && std::chrono::duration<double>(now - last_report).count() >= 1.0) {
+    if (const double since = std::chrono::duration<double>(now - last_report).count(); opt.progress && since >= 1.0) {
+      // rates over the last report's interval: a fine region that starts late changes them
       last_report = now;
-      const double wall = std::chrono::duration<double>(now - t0).count();
-      const long done = domain.steps() - start_step;
+      const double u = updates(), per_step = since / std::max(1L, domain.steps() - report_steps);
       const double fraction = static_cast<double>(domain.steps()) / total_steps;
-      const double per_step = done > 0 ? wall / done : 0;
-      opt.progress(
-          {fraction, t, per_step * (total_steps - domain.steps()), done * cells_per_step / std::max(wall, 1e-9) / 1e6, writer->frames()});
+      opt.progress({fraction, t, per_step * (total_steps - domain.steps()), (u - report_updates) / since / 1e6, writer->frames()});
+      report_steps = domain.steps();
+      report_updates = u;
     }
   }
   r.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -420,11 +427,11 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
   r.frames = writer->frames();
   r.rebuilds = domain.rebuilds();
   const long done = domain.steps() - start_step;
-  r.mlups = done * static_cast<double>(cells_per_step) / std::max(r.wall_seconds, 1e-9) / 1e6;
+  r.mlups = updates() / std::max(r.wall_seconds, 1e-9) / 1e6;
   r.coarse_seconds = domain.coarse_seconds() - coarse_s0;
   r.fine_seconds = domain.fine_seconds() - fine_s0;
   r.coarse_mlups = done * static_cast<double>(domain.cells()) / std::max(r.coarse_seconds, 1e-9) / 1e6;
-  if (fine) r.fine_mlups = done * static_cast<double>(fine->grid().cells() * fine->config().ratio) / std::max(r.fine_seconds, 1e-9) / 1e6;
+  if (fine) r.fine_mlups = static_cast<double>(fine->steps() - fine_steps0) * fine->grid().cells() / std::max(r.fine_seconds, 1e-9) / 1e6;
   // statistics: in the table and as CSV for the plots
   const std::vector<int> dims3{stats.nz, stats.nx, 3}, dims6{stats.nz, stats.nx, 6}, dims1{stats.nz, stats.nx};
   writer->write_statistic("centre_plane_mean_velocity", stats.mean(), dims3);

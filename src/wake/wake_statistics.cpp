@@ -113,7 +113,13 @@ void write_plane_csv(const std::string& path, const CentrePlaneStats& s, bool ph
           << k[n];
       for (int a = 0; a < 6; ++a) out << "," << r[6 * n + a];
       if (phases)
-        for (int p = 0; p < 4; ++p) out << "," << pm[p][3 * n] << "," << pm[p][3 * n + 2] << "," << pk[p][n];
+        for (int p = 0; p < 4; ++p) {
+          if (pk[p].size() <= n) {  // a phase with no sample yet (a run shorter than the period)
+            out << ",nan,nan,nan";
+            continue;
+          }
+          out << "," << pm[p][3 * n] << "," << pm[p][3 * n + 2] << "," << pk[p][n];
+        }
       out << "," << wind << "\n";
     }
   if (!out) throw TableError("writing '" + path + "' failed (disk full?)");

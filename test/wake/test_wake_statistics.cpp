@@ -80,6 +80,15 @@ TEST(WakeStatistics, ReynoldsStressesOfAKnownSignal) {
   EXPECT_NEAR(plane.tke()[1], (s.a * s.a + s.b * s.b) / 4, 1e-5);
   EXPECT_EQ(plane.phase_samples[2], n / 2);
   EXPECT_NEAR(plane.tke(2)[0], (s.a * s.a + s.b * s.b) / 4, 1e-5);
+  // a run shorter than the period has phases without samples: written as nan, not read past the end
+  const std::string csv = temp("phases.csv");
+  write_plane_csv(csv, plane, true, 9.77);
+  std::ifstream in(csv);
+  std::string header, row;
+  std::getline(in, header);
+  std::getline(in, row);
+  EXPECT_NE(header.find("phase0_u"), std::string::npos);
+  EXPECT_NE(row.find("nan"), std::string::npos);
 }
 
 // The wind-tunnel frame (thesis 7.1): x aft, y starboard, z up from the bottom of the hangar door; the

@@ -25,6 +25,11 @@ struct NrcDeckOptions {
   double startup = -1;             // s; < 0: the wind's time across the wake domain
   bool quick = false;              // the CI variant: 64 cells per length, 0.3 s (laminar: a check of the pipeline, not of the physics)
   std::vector<std::array<double, 3>> extra_probes;  // wind-tunnel frame, model scale (m), after the thesis' two
+  // The fine region, ship lengths (FineRegionConfig): aft, fore, half width, top. The default: 0.3
+  // behind the hangar door to 0.8 forward of it (the whole superstructure, to just aft of the stem),
+  // 0.13 to either side, up to 0.31 above the waterline (clear of the mast); for a moving ship the
+  // fore face is moved past the bow.
+  std::array<double, 4> box{-0.3, 0.8, 0.13, 0.31};
   lbm::Backend backend = lbm::Backend::Auto;
   std::string out_dir;  // the table, its CSVs and the result's JSON are written here
   bool resume = true;
@@ -49,6 +54,7 @@ struct NrcDeckProbe {
 struct NrcDeckResult {
   NrcDeckOptions options;
   int coarse_cells_per_length = 0, ratio = 0;
+  std::array<double, 4> run_box{};  // the fine region as run (ship lengths; the fore face past the bow for a moving ship)
   double wind = 9.77;
   double statistics_seconds = 0;
   std::vector<NrcDeckProbe> probes;

@@ -37,7 +37,8 @@ struct CentrePlaneStats {
 };
 
 // Writes the plane's statistics as CSV (x_m, z_m, solid, mean_u, mean_v, mean_w, tke, uu, vv, ww, uv,
-// uw, vw, [phaseK_u, phaseK_w, phaseK_tke], wind); TableError when the file cannot be written.
+// uw, vw, [phaseK_u, phaseK_w, phaseK_tke: nan for a phase with no sample], wind); TableError when
+// the file cannot be written.
 void write_plane_csv(const std::string& path, const CentrePlaneStats& s, bool phases, double wind);
 
 // Velocity time series at probe points; a sample where a probe is not in the fluid (a moving deck
