@@ -61,6 +61,9 @@ std::function<int()> add_wake_command(CLI::App& app) {
                   "domain runs: give the start-up minus a few of the region's flow-through times)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--probes", *probes, "probe points, a CSV of x,y,z in metres: velocity series and statistics (FILE_probes*.csv)");
+  cmd->add_flag("--probes-on-ship", opt->probes_on_ship,
+                "probes fixed to the moving ship (as a model's probes in a wind tunnel): the air relative to them in the ship's axes "
+                "(default: fixed points of the mean frame)");
   cmd->add_option("--probe-frame", *probe_frame,
                   "the probes' frame: tunnel (origin at the bottom of the hangar door on the centreline, x aft along the deck, y "
                   "starboard, z up; the NRC wind-tunnel frame of thesis 7.1) or ship (x forward, y starboard, z down)")

@@ -117,6 +117,7 @@ NrcDeckResult run_nrc_deck(const NrcDeckOptions& in) {
   std::vector<std::array<double, 3>> tunnel(kThesisProbes.begin(), kThesisProbes.end());
   tunnel.insert(tunnel.end(), o.extra_probes.begin(), o.extra_probes.end());
   for (const auto& t : tunnel) p.probes.push_back(to_ship_frame(t, ProbeFrame::Tunnel));
+  p.probes_on_ship = true;  // the NRC model's COBRA probes are fixed to the ship (thesis 7.1)
   std::error_code ec;
   fs::create_directories(o.out_dir, ec);
   if (!fs::is_directory(o.out_dir)) throw lbm::ConfigError("nrc-deck: cannot create the folder '" + o.out_dir + "'");

@@ -34,7 +34,7 @@ std::string signature(const PrecomputeOptions& o, const ShipWakeDomain& d) {
     s << " fine=" << o.domain.fine.ratio << ":" << o.domain.fine.aft << ":" << o.domain.fine.fore << ":" << o.domain.fine.half_width << ":"
       << o.domain.fine.top;
   if (!o.probes.empty()) {
-    s << " probes=";
+    s << (o.probes_on_ship ? " ship_probes=" : " probes=");
     for (const auto& p : o.probes) s << p[0] << "," << p[1] << "," << p[2] << ";";
   }
   return s.str();
@@ -260,9 +260,8 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
       if (!std::isfinite(v)) throw lbm::ConfigError("wake: a probe point is not finite");
     probes.points.push_back(p);
   }
-  const auto probe_velocity = [&](const lbm::Fields& coarse, const lbm::Fields* fine_fields, const std::array<double, 3>& p,
-                                  std::array<double, 3>& u) {
-    const Vec3 q(p[0], p[1], p[2]);
+  // the air at point q (mean frame) from the finest level that covers it
+  const auto probe_air = [&](const lbm::Fields& coarse, const lbm::Fields* fine_fields, const Vec3& q, std::array<double, 3>& u) {
     if (fine && fine_fields && fine->velocity_at(*fine_fields, q, u)) return true;
     if (fine && fine_fields) {  // inside the fine grid but at a solid: not the coarse value there either
       const NodeGrid& g = fine->grid();
@@ -271,6 +270,19 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
     }
     return domain.velocity_at(coarse, q, u);
   };
+  // the air at probe p at time t; a ship-fixed probe is where the ship has taken it and records the
+  // air relative to itself in the ship's axes
+  const bool on_ship = opt.probes_on_ship && !motion->is_static();
+  const auto probe_velocity = [&](const lbm::Fields& coarse, const lbm::Fields* fine_fields, const std::array<double, 3>& p,
+                                  std::array<double, 3>& u, double t) {
+    const Vec3 body(p[0], p[1], p[2]);
+    if (!probe_air(coarse, fine_fields, on_ship ? motion->position(body, t) : body, u)) return false;
+    if (on_ship) {
+      const Vec3 rel = motion->placement(t).rotation.transpose() * (Vec3(u[0], u[1], u[2]) - motion->velocity(body, t));
+      u = {rel.x(), rel.y(), rel.z()};
+    }
+    return true;
+  };
   if (!probes.points.empty()) {
     const lbm::Fields c = domain.fields();
     lbm::Fields f;
@@ -278,7 +290,7 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
     for (int k = 0; k < probes.probes(); ++k) {
       std::array<double, 3> u{};
       const auto& p = probes.points[k];
-      if (!probe_velocity(c, fine ? &f : nullptr, p, u))
+      if (!probe_velocity(c, fine ? &f : nullptr, p, u, domain.time()))
         throw lbm::ConfigError("wake: probe " + std::to_string(k) + " at (" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " +
                                std::to_string(p[2]) +
                                ") m (ship frame) is not in the fluid: inside or next to the ship or the sea, or "
@@ -397,7 +409,7 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
             probes.time.push_back(t);
             for (const auto& p : probes.points) {
               std::array<double, 3> u{};
-              if (!probe_velocity(f, fine ? &ff : nullptr, p, u)) u.fill(std::numeric_limits<double>::quiet_NaN());
+              if (!probe_velocity(f, fine ? &ff : nullptr, p, u, t)) u.fill(std::numeric_limits<double>::quiet_NaN());
               for (double v : u) probes.u.push_back(static_cast<float>(v));
             }
           }

@@ -28,6 +28,10 @@ struct PrecomputeOptions {
   // Probe points (m, ship frame of the mean pose: x forward, y starboard, z down), sampled from the
   // finest level that covers each; ConfigError before any step for a probe that is not in the fluid.
   std::vector<std::array<double, 3>> probes;
+  // Probes fixed to the ship (as the NRC model's COBRA probes, thesis 7.1): each is a point of the
+  // moving ship and records the air relative to it in the ship's axes. Off: fixed points of the mean
+  // frame, recording the air in the mean frame (the same for a static ship).
+  bool probes_on_ship = false;
   bool half_precision = true;               // float16 on disk
   std::string out;                          // table path (.h5); the side-car .xdmf and the checkpoint .ckpt beside it
   double checkpoint_seconds = 60;           // wall-clock interval between checkpoints
