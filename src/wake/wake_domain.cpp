@@ -224,12 +224,6 @@ WakeTableInfo ShipWakeDomain::table_info() const {
   return info;
 }
 
-void ShipWakeDomain::fine_table_frame(std::vector<float>& velocity, std::vector<float>& density) {
-  velocity.clear();
-  density.clear();
-  if (fine_) fine_->table_frame(fine_->fields(), cfg_.density, velocity, density);
-}
-
 bool ShipWakeDomain::velocity_at(const lbm::Fields& f, const Vec3& p, std::array<double, 3>& u) const {
   return fluid_velocity_at(grid(), owner_, f.u.data(), units_.dx() / units_.dt(), p, u);
 }

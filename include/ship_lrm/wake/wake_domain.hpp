@@ -100,8 +100,6 @@ class ShipWakeDomain {
   // body's velocity and the free density.
   WakeTableInfo table_info() const;  // GeometryError when the fine region reaches outside the tabulated region
   void table_frame(const lbm::Fields& f, std::vector<float>& velocity, std::vector<float>& density) const;
-  // The fine region's frame now (table_info().fine; empty without a fine region).
-  void fine_table_frame(std::vector<float>& velocity, std::vector<float>& density);
   // Velocity (m/s, mean frame) at ship-frame point p from `f` (fields()), trilinear between nodes;
   // false outside the domain or at a solid (see fluid_velocity_at).
   bool velocity_at(const lbm::Fields& f, const Vec3& p, std::array<double, 3>& u) const;
