@@ -107,11 +107,7 @@ std::function<int()> add_nrc_deck_command(CLI::App& validate) {
   cmd->add_flag("--json", o->json, "print only the JSON object on stdout (progress on stderr)");
   return [o, cmd]() -> int {
     if (!cmd->parsed()) return -1;
-    wake::NrcDeckOptions run = o->run;
-    if (run.quick) {
-      run.cells_per_length = 64;
-      run.seconds = 0.3;
-    }
+    wake::NrcDeckOptions run = wake::with_quick_setting(o->run);
     wake::nest_resolution(run.cells_per_length);  // ConfigError before anything is written
     run.backend = lbm::parse_backend(o->backend);
     if (!o->box.empty()) std::copy(o->box.begin(), o->box.end(), run.box.begin());

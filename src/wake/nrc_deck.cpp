@@ -59,14 +59,18 @@ std::array<int, 2> nest_resolution(int cells_per_length) {
   return {cells_per_length / best, best};
 }
 
-NrcDeckResult run_nrc_deck(const NrcDeckOptions& in) {
-  NrcDeckResult r;
-  r.options = in;
-  NrcDeckOptions& o = r.options;
+NrcDeckOptions with_quick_setting(NrcDeckOptions o) {
   if (o.quick) {
     o.cells_per_length = 64;
     o.seconds = 0.3;
   }
+  return o;
+}
+
+NrcDeckResult run_nrc_deck(const NrcDeckOptions& in) {
+  NrcDeckResult r;
+  r.options = with_quick_setting(in);
+  NrcDeckOptions& o = r.options;
   if (o.motion != "static" && o.motion != "pitch" && o.motion != "heave")
     throw lbm::ConfigError("nrc-deck: --motion must be static, pitch or heave (thesis 7.2), got '" + o.motion + "'");
   if (!(o.seconds > 0) || !std::isfinite(o.seconds) || o.seconds > 1e4) throw lbm::ConfigError("nrc-deck: --seconds must be in (0, 1e4]");

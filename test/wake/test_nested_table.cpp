@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "nrc_model_case.hpp"
 #include "ship_lrm/lbm/lattice.hpp"
 #include "ship_lrm/wake/nested_table.hpp"
 #include "ship_lrm/wake/wake_precompute.hpp"
@@ -262,16 +263,9 @@ namespace {
 // A small nested NRC run: the 1/50 model at 32 coarse cells per length, a fine region at ratio 2
 // started after the coarse domain, the thesis' two deck probes.
 PrecomputeOptions small_nested_run(const std::string& name) {
-  PrecomputeOptions o;
-  o.ship = "natogd";
-  o.scale = "model";
-  o.motion = "static";
-  o.domain.cells_per_length = 32;
-  o.domain.wind = 9.77;
-  o.domain.density = 1.225;
-  o.domain.backend = ship_lrm::lbm::Backend::Cpu;
+  PrecomputeOptions o = ship_lrm::test::nrc_model_case("static", 32);
   o.domain.fine.ratio = 2;
-  o.domain.fine.aft = -0.3;  // the NRC deck case's box (nrc_deck.cpp)
+  o.domain.fine.aft = -0.3;  // over the hangar and the deck: small and cheap (laminar at this resolution)
   o.domain.fine.fore = 0.1;
   o.domain.fine.half_width = 0.13;
   o.domain.fine.top = 0.17;

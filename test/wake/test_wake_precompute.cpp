@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "nrc_model_case.hpp"
 #include "ship_lrm/lbm/lattice.hpp"
 #include "ship_lrm/lbm/stream_stability.hpp"
 #include "ship_lrm/lbm/units.hpp"
@@ -94,14 +95,7 @@ TEST(WakePrecompute, BadInputIsRefusedBeforeAnyStep) {
 // mean flow above the deck is reversed (u_x > 0 against the wind's -x). Full variant: README
 // (`ship_lrm wake --scale model --N 48 ...` and scripts/plot_wake.py).
 TEST(WakePrecompute, FlowSeparatesBehindTheHangarDoor) {
-  PrecomputeOptions o;
-  o.ship = "natogd";
-  o.scale = "model";
-  o.motion = "static";
-  o.domain.cells_per_length = 32;
-  o.domain.wind = 9.77;
-  o.domain.density = 1.225;
-  o.domain.backend = ship_lrm::lbm::Backend::Cpu;
+  PrecomputeOptions o = ship_lrm::test::nrc_model_case("static", 32);
   o.duration = 1.0;
   o.frame_interval = 1.0;
   o.stats_interval = 0.01;

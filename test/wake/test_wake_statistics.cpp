@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "nrc_model_case.hpp"
 #include "ship_lrm/lbm/lattice.hpp"
 #include "ship_lrm/wake/nested_table.hpp"
 #include "ship_lrm/wake/nrc_deck.hpp"
@@ -139,14 +140,7 @@ TEST(WakeStatistics, NrcDeckResolutionsNest) {
 // heave of A sin(w t) upwards (0.04 m at 1 Hz on the model, thesis 7.2; z points down). Ahead of the
 // bow, where the probe's 0.04 m of travel crosses no gradient to speak of.
 TEST(WakeStatistics, AShipFixedProbeRecordsTheAirRelativeToTheShip) {
-  PrecomputeOptions o;
-  o.ship = "natogd";
-  o.scale = "model";
-  o.motion = "heave";
-  o.domain.cells_per_length = 32;
-  o.domain.wind = 9.77;
-  o.domain.density = 1.225;
-  o.domain.backend = ship_lrm::lbm::Backend::Cpu;
+  PrecomputeOptions o = ship_lrm::test::nrc_model_case("heave", 32);
   o.startup = 0.3;
   o.duration = 1.0;  // one period
   o.frame_interval = 1.0;

@@ -65,6 +65,9 @@ struct NrcDeckResult {
   PrecomputeResult run;
 };
 
+// The options as run: with `quick`, its resolution and statistics time in place of the given ones.
+NrcDeckOptions with_quick_setting(NrcDeckOptions o);
+
 // Runs the case (ConfigError, GeometryError for bad options before any step); writes the table and
 // the centre-plane and probe CSVs into out_dir.
 NrcDeckResult run_nrc_deck(const NrcDeckOptions& opt);
