@@ -38,17 +38,12 @@ void read_number_param(const ros::NodeHandle& nh, const std::string& name, doubl
   if (!std::isfinite(value)) throw ParamError("parameter " + nh.resolveName(name) + " must be finite");
 }
 
-std::string missing_table_message(const std::string& path, bool is_default) {
-  if (is_default) return "the default wake table " + path + " does not exist yet; make it with `ship_lrm wake --preset default`";
-  return "wake table '" + path + "' not found; make one with `ship_lrm wake --preset default --out " + path + "`";
-}
-
 lrm::ApproachConfig approach_config(const ros::NodeHandle& nh, bool table_here) {
   lrm::ApproachConfig c;
   read_param(nh, "wake_file", c.table);
-  const bool is_default = c.table.empty();
-  if (is_default) c.table = wake::default_table_path();
-  if (table_here && !std::filesystem::exists(c.table)) throw ParamError(missing_table_message(c.table, is_default));
+  std::string preset;
+  c.table = wake::named_table(c.table, preset);
+  if (table_here && !std::filesystem::exists(c.table)) throw ParamError(wake::missing_table_message(c.table, preset));
   read_param(nh, "inflow", c.inflow);
   if (c.inflow != "lrm" && c.inflow != "pitt_peters")
     throw ParamError("parameter " + where(nh, "inflow") + " must be lrm or pitt_peters, got '" + c.inflow + "'");

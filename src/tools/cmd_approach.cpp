@@ -52,7 +52,9 @@ std::function<int()> add_approach_command(CLI::App& app) {
   };
   auto o = std::make_shared<Opts>();
   o->cfg.lrm.nodes = 32;
-  cmd->add_option("--wake", o->cfg.table, "wake table (HDF5) of a full-scale ship; default: the cached default table");
+  cmd->add_option("--wake", o->cfg.table,
+                  "wake table (HDF5) of a full-scale ship, or default or realistic: the cached table of that preset (`ship_lrm wake "
+                  "--preset NAME`); default: default");
   cmd->add_option("--inflow", o->cfg.inflow, "lrm, or pitt_peters (the table's air at the hub as the wind)")
       ->check(CLI::IsMember({"lrm", "pitt_peters"}))
       ->capture_default_str();
@@ -113,17 +115,9 @@ std::function<int()> add_approach_command(CLI::App& app) {
     cfg.fuselage = !o->no_fuselage;
     cfg.rotor_forces_on_fluid = !o->no_rotor_forces;
     o->faces.apply(cfg.lrm);
-    if (cfg.table.empty()) {
-      cfg.table = wake::default_table_path();
-      if (!fs::exists(cfg.table))
-        throw lbm::ConfigError("the default wake table " + cfg.table +
-                               " does not exist yet; make it with `ship_lrm wake --preset default`");
-    } else if (!fs::exists(cfg.table)) {
-      throw lbm::ConfigError("wake table '" + cfg.table +
-                             "' not found; make one with `ship_lrm wake --ship natogd --scale full ...` "
-                             "or `ship_lrm wake --preset default --out " +
-                             cfg.table + "`");
-    }
+    std::string preset;
+    cfg.table = wake::named_table(cfg.table, preset);
+    if (!fs::exists(cfg.table)) throw lbm::ConfigError(wake::missing_table_message(cfg.table, preset));
     if (o->pipelined && !o->realtime) throw lbm::ConfigError("--pipelined needs --realtime");
     if (o->plane_from && o->realtime)
       throw lbm::ConfigError("--plane-mean-from needs a run in simulated time (with --realtime the LRM's own thread owns the domain)");

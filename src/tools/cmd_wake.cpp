@@ -31,11 +31,14 @@ std::function<int()> add_wake_command(CLI::App& app) {
   auto collision = std::make_shared<std::string>("bgk");
   auto flags = std::make_shared<std::array<bool, 4>>();  // overwrite, no-resume, float32, no-plot
   auto fine_box = std::make_shared<std::vector<double>>();
+  auto fine_stored = std::make_shared<std::vector<double>>();
   auto probes = std::make_shared<std::string>();
   auto probe_frame = std::make_shared<std::string>("tunnel");
   auto probe_scale = std::make_shared<std::string>();
   cmd->add_option("--preset", *preset,
-                  "default (the approach scenario's table; cached under ~/.cache/ship_lrm when --out is not given) or tiny");
+                  "default (the approach scenario's table, laminar over the deck; minutes), realistic (the same with the deck region "
+                  "at 364 cells per ship length, turbulent; about 40 minutes on 2 cores) or tiny (tests); default and realistic are "
+                  "cached under ~/.cache/ship_lrm when --out is not given");
   cmd->add_option("--ship", opt->ship, "natogd, sfs2 or FILE.stl (full scale, metres, ship frame: x forward, z down)");
   cmd->add_option("--scale", opt->scale, "model (1/50, the NRC wind-tunnel model) or full");
   cmd->add_option("--N", opt->domain.cells_per_length, "cells per ship length (thesis: converged at 364)");
@@ -60,6 +63,10 @@ std::function<int()> add_wake_command(CLI::App& app) {
                   "start the fine region this many seconds into the run, from the coarse air (default 0; before it only the coarse "
                   "domain runs: give the start-up minus a few of the region's flow-through times)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--fine-stored", *fine_stored,
+                  "the part of the fine region the table stores, ship lengths: AFT,FORE,TOP (as --fine-box; default: all of it)")
+      ->delimiter(',')
+      ->expected(3);
   cmd->add_option("--probes", *probes, "probe points, a CSV of x,y,z in metres: velocity series and statistics (FILE_probes*.csv)");
   cmd->add_flag("--probes-on-ship", opt->probes_on_ship,
                 "probes fixed to the moving ship (as a model's probes in a wind tunnel): the air relative to them in the ship's axes "
@@ -106,7 +113,14 @@ std::function<int()> add_wake_command(CLI::App& app) {
       if (!given("--duration")) o.duration = p.duration;
       if (!given("--interval")) o.frame_interval = p.frame_interval;
       o.half_precision = p.half_precision;
-      if (o.out.empty() && *preset == "default") o.out = wake::default_table_path();
+      // the preset's fine region, unless one is given; its start keeps its lead on a start-up given
+      if (!given("--fine-ratio")) {
+        const double lead = p.startup - p.domain.fine.start;
+        o.domain.fine = p.domain.fine;
+        if (given("--startup") && !given("--fine-start")) o.domain.fine.start = std::max(0.0, o.startup - lead);
+        if (given("--fine-start")) o.domain.fine.start = opt->domain.fine.start;
+      }
+      if (o.out.empty() && (*preset == "default" || *preset == "realistic")) o.out = wake::preset_table_path(*preset);
     }
     if (o.out.empty()) throw CLI::ValidationError("--out", "give the table file (FILE.h5)");
     if (!fine_box->empty()) {
@@ -115,6 +129,12 @@ std::function<int()> add_wake_command(CLI::App& app) {
       o.domain.fine.fore = (*fine_box)[1];
       o.domain.fine.half_width = (*fine_box)[2];
       o.domain.fine.top = (*fine_box)[3];
+    }
+    if (!fine_stored->empty()) {
+      if (o.domain.fine.ratio == 0) throw CLI::ValidationError("--fine-stored", "needs --fine-ratio");
+      o.domain.fine.stored_aft = (*fine_stored)[0];
+      o.domain.fine.stored_fore = (*fine_stored)[1];
+      o.domain.fine.stored_top = (*fine_stored)[2];
     }
     std::vector<std::array<double, 3>> probe_labels;
     if (!probes->empty()) {
@@ -142,7 +162,7 @@ std::function<int()> add_wake_command(CLI::App& app) {
     const std::string ckpt = o.out + ".ckpt";
     o.resume = !(*flags)[1];
     if (fs::exists(o.out) && !(o.resume && fs::exists(ckpt)) && !(*flags)[0]) {
-      if (!preset->empty() && *preset == "default" && o.out == wake::default_table_path()) {
+      if ((*preset == "default" || *preset == "realistic") && o.out == wake::preset_table_path(*preset)) {
         // the cache is ours: reuse it when complete, else make it again
         const int expected = static_cast<int>(std::floor(o.duration / o.frame_interval + 1e-9)) + 1;
         int frames = 0;
@@ -150,15 +170,16 @@ std::function<int()> add_wake_command(CLI::App& app) {
         try {
           const wake::WakeTable t(o.out);
           frames = t.info().frames;
-          same = t.info().motion == o.motion && t.info().scale == o.scale && std::abs(t.info().frame_interval - o.frame_interval) < 1e-12;
+          same = t.info().motion == o.motion && t.info().scale == o.scale && std::abs(t.info().frame_interval - o.frame_interval) < 1e-12 &&
+                 t.info().fine.ratio == o.domain.fine.ratio;
         } catch (const wake::TableError&) {
         }
         if (same && frames >= expected) {
-          std::cout << "the default wake table is cached: " << o.out << "\n";
+          std::cout << "the " << *preset << " wake table is cached: " << o.out << "\n";
           return 0;
         }
-        std::cout << "the cached default wake table " << o.out << " is incomplete or of another set-up (" << frames << " of " << expected
-                  << " frames, no checkpoint): making it again\n";
+        std::cout << "the cached " << *preset << " wake table " << o.out << " is incomplete or of another set-up (" << frames << " of "
+                  << expected << " frames, no checkpoint): making it again\n";
         o.resume = false;
       } else {
         throw std::runtime_error(o.out + " exists; pass --overwrite to replace it");

@@ -77,6 +77,25 @@ FineRegion::FineRegion(const FineRegionConfig& cfg, const WakeConfig& wake, cons
   grid_.nx = cfg.ratio * (i1 - i0) + 1;
   grid_.ny = cfg.ratio * (j1 - j0) + 1;
   grid_.nz = cfg.ratio * (k1 - k0) + 1;
+  // the stored part: coarse cells [s0, s1] of each axis (y: the whole width), outwards to coarse nodes
+  const auto stored_value = [](double v, double box) { return std::isnan(v) ? box : v; };
+  const double s_aft = stored_value(cfg.stored_aft, cfg.aft), s_fore = stored_value(cfg.stored_fore, cfg.fore);
+  const double s_top = stored_value(cfg.stored_top, cfg.top);
+  const double eps = 1e-9;
+  if (!std::isfinite(s_aft) || !std::isfinite(s_fore) || !std::isfinite(s_top) || s_aft < cfg.aft - eps || s_fore > cfg.fore + eps ||
+      !(s_fore > s_aft) || !(s_top > 0) || s_top > cfg.top + eps)
+    throw lbm::ConfigError("fine region: the stored part (x " + metres(s_aft * l) + " .. " + metres(s_fore * l) + ", " + metres(s_top * l) +
+                           " above the waterline) must lie inside the box (" + box + ") with fore > aft and a top > 0");
+  const int si0 = std::max(i0, static_cast<int>(std::floor((s_aft * l - coarse.origin.x()) / dx + eps)));
+  const int si1 = std::min(i1, static_cast<int>(std::ceil((s_fore * l - coarse.origin.x()) / dx - eps)));
+  const int sk0 = std::max(k0, static_cast<int>(std::floor((water - s_top * l - coarse.origin.z()) / dx + eps)));
+  if (si1 - si0 < 4 || k1 - sk0 < 4)
+    throw lbm::ConfigError("fine region: the stored part spans fewer than 4 coarse cells along x or z (x " + metres(s_aft * l) + " .. " +
+                           metres(s_fore * l) + ", " + metres(s_top * l) +
+                           " above the waterline): the table blends it into the coarse "
+                           "grid over 2 coarse cells at each face");
+  stored_lo_ = {cfg.ratio * (si0 - i0), 0, cfg.ratio * (sk0 - k0)};
+  stored_shape_ = {cfg.ratio * (si1 - si0) + 1, grid_.ny, cfg.ratio * (k1 - sk0) + 1};
   hull_box_ = hull_box(*ship_);
   check_ship_clearance();
   // the feed: the coarse grid as the field, the fine node (0, 0, 0) as the "hub", axes aligned, at rest
@@ -250,20 +269,21 @@ void FineRegion::advance(const std::vector<float>& before, const std::vector<flo
 
 void FineRegion::table_frame(const lbm::Fields& f, double free_density, std::vector<float>& velocity, std::vector<float>& density) const {
   const double scale = units_.dx() / units_.dt();
-  const std::size_t n = grid_.cells();
+  const std::size_t n = stored_points();
   velocity.assign(3 * n, 0.0f);
   density.assign(n, static_cast<float>(free_density));
   const ShipPlacement place = motion_->placement(time_);
-  for (int k = 0; k < grid_.nz; ++k)
-    for (int j = 0; j < grid_.ny; ++j)
-      for (int i = 0; i < grid_.nx; ++i) {
+  std::size_t s = 0;  // the stored point, x fastest
+  for (int k = stored_lo_[2]; k < stored_lo_[2] + stored_shape_[2]; ++k)
+    for (int j = stored_lo_[1]; j < stored_lo_[1] + stored_shape_[1]; ++j)
+      for (int i = stored_lo_[0]; i < stored_lo_[0] + stored_shape_[0]; ++i, ++s) {
         const std::size_t c = grid_.index(i, j, k);
         if (owner_[c] == kFluidNode) {
-          for (int d = 0; d < 3; ++d) velocity[3 * c + d] = static_cast<float>(f.u[3 * c + d] * scale);
-          density[c] = static_cast<float>(f.rho[c] * free_density);
+          for (int d = 0; d < 3; ++d) velocity[3 * s + d] = static_cast<float>(f.u[3 * c + d] * scale);
+          density[s] = static_cast<float>(f.rho[c] * free_density);
         } else if (owner_[c] == kShipNode) {
           const Vec3 v = motion_->velocity(place.to_body(grid_.position(i, j, k)), time_);
-          for (int d = 0; d < 3; ++d) velocity[3 * c + d] = static_cast<float>(v[d]);
+          for (int d = 0; d < 3; ++d) velocity[3 * s + d] = static_cast<float>(v[d]);
         }
       }
 }

@@ -193,8 +193,11 @@ WakeTableInfo ShipWakeDomain::table_info() const {
   const double N = cfg_.cells_per_length, l = ship_->datum().length;
   const int jc = (ny_ - 1) / 2, half = static_cast<int>(std::lround(0.5 * cfg_.table_width * N));
   int i1 = std::min(nx_ - 1, static_cast<int>(std::lround((ship_->datum().stem_x - origin_.x()) / units_.dx())));
-  // with a fine region that reaches past the stem (a moving ship's must), the table reaches as far
-  if (fine_) i1 = std::min(nx_ - 1, std::max(i1, fine_->window_lo()[0] + (fine_->grid().nx - 1) / fine_->config().ratio));
+  // with a stored fine part that reaches past the stem, the table reaches as far
+  if (fine_) {
+    const int r = fine_->config().ratio;
+    i1 = std::min(nx_ - 1, std::max(i1, fine_->window_lo()[0] + (fine_->stored_lo()[0] + fine_->stored_shape()[0] - 1) / r));
+  }
   const int k0 = std::clamp(static_cast<int>(std::lround(cfg_.table_top * l / units_.dx())), 0, nz_ - 2);
   WakeTableInfo info;
   const Vec3 o = position(0, jc - half, k0);
@@ -206,12 +209,15 @@ WakeTableInfo ShipWakeDomain::table_info() const {
   info.ship = ship_->name();
   info.motion = motion_->name();
   if (fine_) {
-    // the fine grid's first node is coarse node window_lo(); the sea face (z+: z points down) has
-    // nothing to blend with, the other five are blended into the coarse grid over two coarse cells
-    const NodeGrid& g = fine_->grid();
-    info.fine.ratio = fine_->config().ratio;
-    info.fine.lo = {fine_->window_lo()[0], fine_->window_lo()[1] - (jc - half), fine_->window_lo()[2] - k0};
-    info.fine.shape = {g.nx, g.ny, g.nz};
+    // the fine grid's first node is coarse node window_lo(), the stored part's stored_lo() / ratio
+    // coarse nodes further; the sea face (z+: z points down) has nothing to blend with, the other five
+    // are blended into the coarse grid over two coarse cells
+    const int r = fine_->config().ratio;
+    const std::array<int, 3>& s = fine_->stored_lo();
+    info.fine.ratio = r;
+    info.fine.lo = {fine_->window_lo()[0] + s[0] / r, fine_->window_lo()[1] + s[1] / r - (jc - half),
+                    fine_->window_lo()[2] + s[2] / r - k0};
+    info.fine.shape = fine_->stored_shape();
     info.fine.seam = {1, 1, 1, 1, 1, 0};
     info.fine.seam_cells = 2;
     // the table stores the fine grid inside its coarse box

@@ -111,12 +111,13 @@ const WakeTable::Window& WakeTable::window(int frame, const std::array<int, 3>& 
       return w;
     }
   }
-  // load a window around [lo, hi] with a margin (the domain moves on), bounded by max_points_
+  // load a window around [lo, hi] with a margin of a quarter of its size (the domain moves on: a
+  // window serves up to three frame intervals, the read-ahead's included), bounded by max_points_
   std::array<int, 3> a{}, n{};
   std::size_t need = 1, with_margin = 1;
   for (int d = 0; d < 3; ++d) {
     need *= static_cast<std::size_t>(hi[d] - lo[d] + 1);
-    const int margin = (hi[d] - lo[d] + 1) / 2 + 1;
+    const int margin = (hi[d] - lo[d] + 1) / 4 + 1;
     a[d] = std::max(0, lo[d] - margin);
     n[d] = std::min(info_.shape[d] - 1, hi[d] + margin) - a[d] + 1;
     with_margin *= static_cast<std::size_t>(n[d]);

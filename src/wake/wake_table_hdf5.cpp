@@ -159,17 +159,31 @@ struct WakeTableWriter::Impl {
 };
 
 namespace {
+// Chunks of one frame and kChunkEdge^3 nodes (x, y, z; fewer where a level is smaller), byte-shuffled
+// and deflated at level 1 where the HDF5 library has deflate (Debian's does). Chosen by measurement,
+// docs/benchmarks.md "The wake table on disk": on the default table shuffle + deflate 1 halves the
+// size at the cost of a few per cent of the precompute; blocks rather than one chunk per frame, since
+// a compressed chunk is inflated whole for every window the reader takes from it.
+constexpr hsize_t kChunkEdge = 32;
+constexpr unsigned kDeflateLevel = 1;
+
 // Creates /velocity and /density of a level (`where`: "" or "/fine") of shape nx, ny, nz with no
-// frames yet, one chunk per frame.
+// frames yet.
 void create_level(hid_t file, const std::string& where, hid_t disk_type, const std::array<int, 3>& shape, Handle& vel, Handle& rho,
                   const std::string& path) {
   const hsize_t nx = shape[0], ny = shape[1], nz = shape[2];
-  const hsize_t dv[5] = {0, nz, ny, nx, 3}, mv[5] = {H5S_UNLIMITED, nz, ny, nx, 3}, cv[5] = {1, nz, ny, nx, 3};
-  const hsize_t dr[4] = {0, nz, ny, nx}, mr[4] = {H5S_UNLIMITED, nz, ny, nx}, cr[4] = {1, nz, ny, nx};
+  const hsize_t bx = std::min(nx, kChunkEdge), by = std::min(ny, kChunkEdge), bz = std::min(nz, kChunkEdge);
+  const hsize_t dv[5] = {0, nz, ny, nx, 3}, mv[5] = {H5S_UNLIMITED, nz, ny, nx, 3}, cv[5] = {1, bz, by, bx, 3};
+  const hsize_t dr[4] = {0, nz, ny, nx}, mr[4] = {H5S_UNLIMITED, nz, ny, nx}, cr[4] = {1, bz, by, bx};
   Handle sv(H5Screate_simple(5, dv, mv), H5Sclose), sr(H5Screate_simple(4, dr, mr), H5Sclose);
   Handle pv(H5Pcreate(H5P_DATASET_CREATE), H5Pclose), pr(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
-  ok(H5Pset_chunk(pv, 5, cv), "chunking");  // one chunk per frame
+  ok(H5Pset_chunk(pv, 5, cv), "chunking");
   ok(H5Pset_chunk(pr, 4, cr), "chunking");
+  if (H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0 && H5Zfilter_avail(H5Z_FILTER_SHUFFLE) > 0)
+    for (hid_t p : {hid_t(pv), hid_t(pr)}) {
+      ok(H5Pset_shuffle(p), "the shuffle filter");
+      ok(H5Pset_deflate(p, kDeflateLevel), "the deflate filter");
+    }
   vel = Handle(H5Dcreate2(file, (where + "/velocity").c_str(), disk_type, sv, H5P_DEFAULT, pv, H5P_DEFAULT), H5Dclose);
   rho = Handle(H5Dcreate2(file, (where + "/density").c_str(), disk_type, sr, H5P_DEFAULT, pr, H5P_DEFAULT), H5Dclose);
   if (vel < 0 || rho < 0) throw TableError("wake table: cannot create the datasets in '" + path + "'");

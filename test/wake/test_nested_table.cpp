@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "nrc_model_case.hpp"
 #include "ship_lrm/lbm/lattice.hpp"
@@ -355,4 +356,59 @@ TEST(NestedTable, ANestedRunResumesAndRefusesProbesOutsideTheFluid) {
   bad.probes = {{-0.3, 0.0, 0.05}};  // 0.05 m below the deck: in the hull
   EXPECT_THROW(precompute_wake(bad), ship_lrm::lbm::ConfigError);
   EXPECT_FALSE(fs::exists(bad.out));
+}
+
+// A table that stores a part of the fine region (FineRegionConfig::stored_*): the run is the same,
+// the part is served with the region's own values (bit for bit where no seam blends them), the file
+// is smaller; a part outside the region or too small to blend is refused before any step.
+TEST(NestedTable, AStoredPartServesTheRegionsValuesAndIsSmaller) {
+  const PrecomputeOptions whole_o = small_nested_run("nested_all_stored.h5");
+  precompute_wake(whole_o);
+  PrecomputeOptions part_o = small_nested_run("nested_part_stored.h5");
+  part_o.domain.fine.stored_aft = -0.2;  // of the box's -0.3 .. 0.1 ship lengths
+  part_o.domain.fine.stored_fore = 0.05;
+  part_o.domain.fine.stored_top = 0.14;  // of its 0.17
+  precompute_wake(part_o);
+  WakeTableInfo whole_info, whole, part_info, part;
+  open_table_file(whole_o.out, whole_info, &whole);
+  open_table_file(part_o.out, part_info, &part);
+  ASSERT_EQ(part.fine.ratio, whole.fine.ratio);
+  EXPECT_EQ(part_info.shape, whole_info.shape);  // the same served grid
+  EXPECT_GT(part.fine.lo[0], whole.fine.lo[0]);
+  EXPECT_LT(part.fine.shape[0], whole.fine.shape[0]);
+  EXPECT_LT(part.fine.shape[2], whole.fine.shape[2]);
+  EXPECT_EQ(part.fine.shape[1], whole.fine.shape[1]);
+  EXPECT_LT(fs::file_size(part_o.out), fs::file_size(whole_o.out));
+  WakeTable a(whole_o.out), b(part_o.out);
+  std::vector<float> ua, ra, ub, rb;
+  a.read_frame(2, ua, ra);
+  b.read_frame(2, ub, rb);
+  ASSERT_EQ(ua.size(), ub.size());
+  const WakeTableInfo& s = b.info();
+  std::size_t compared = 0, differ_outside = 0;
+  for (int k = 0; k < s.shape[2]; ++k)
+    for (int j = 0; j < s.shape[1]; ++j)
+      for (int i = 0; i < s.shape[0]; ++i) {
+        const std::size_t p = i + static_cast<std::size_t>(s.shape[0]) * (j + static_cast<std::size_t>(s.shape[1]) * k);
+        const bool in_part = fine_weight(part, {i, j, k}) >= 1.0;
+        bool same = true;
+        for (int d = 0; d < 3; ++d) same = same && ua[3 * p + d] == ub[3 * p + d];
+        if (in_part) {
+          ++compared;
+          ASSERT_TRUE(same) << "point " << i << ", " << j << ", " << k;
+        } else if (fine_weight(whole, {i, j, k}) >= 1.0 && !same) {
+          ++differ_outside;  // the region's values there, the coarse level's in the smaller table
+        }
+      }
+  EXPECT_GT(compared, 100u);
+  EXPECT_GT(differ_outside, 0u);
+
+  PrecomputeOptions outside = small_nested_run("nested_part_outside.h5");
+  fs::remove(outside.out);
+  outside.domain.fine.stored_fore = 0.2;  // past the box's fore face
+  EXPECT_THROW(precompute_wake(outside), ship_lrm::lbm::ConfigError);
+  outside.domain.fine.stored_fore = std::numeric_limits<double>::quiet_NaN();
+  outside.domain.fine.stored_aft = 0.05;  // 0.05 .. 0.1: fewer than 4 coarse cells
+  EXPECT_THROW(precompute_wake(outside), ship_lrm::lbm::ConfigError);
+  EXPECT_FALSE(fs::exists(outside.out));
 }

@@ -12,13 +12,11 @@
 
 namespace ship_lrm::ros_layer {
 
-// Reads and checks (ParamError naming the parameter): wake_file (empty: the default table, which must
-// exist here unless table_here is false: a solver fed by the wake server), inflow, N, reach, backend,
-// duration, startup, table_offset, trim_speed, lattice_margin, ship_walls, fuselage, wake, free_flight,
+// Reads and checks (ParamError naming the parameter): wake_file (a table file; empty or default: the
+// default preset's table, realistic: the realistic preset's, wake::named_table; it must exist here
+// unless table_here is false: a solver fed by the wake server), inflow, N, reach, backend, duration,
+// startup, table_offset, trim_speed, lattice_margin, ship_walls, fuselage, wake, free_flight,
 // path/{start_distance, height, lateral, speed, decelerate_at, hover_at}.
 lrm::ApproachConfig approach_config(const ros::NodeHandle& nh, bool table_here = true);
-
-// The message for a missing wake table: names the command that makes it.
-std::string missing_table_message(const std::string& path, bool is_default);
 
 }  // namespace ship_lrm::ros_layer

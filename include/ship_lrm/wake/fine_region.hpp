@@ -11,6 +11,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -31,6 +32,14 @@ struct FineRegionConfig {
   // so that a long start-up costs only the coarse steps (the region then needs a few of its own
   // flow-through times to develop its turbulence).
   double start = 0;
+  // The part of the box the table stores (ship lengths, as aft, fore and top; NaN: the box's own).
+  // The region must reach over what sheds the deck's turbulence (the whole superstructure: an aft
+  // box fed the coarse domain's steady wake stays laminar, docs/validation.md "The NRC deck case");
+  // the table needs only what the rotor flies through (the deck and the approach behind it), a
+  // fraction of the region's size on disk. Snapped outwards to coarse nodes, within the box.
+  double stored_aft = std::numeric_limits<double>::quiet_NaN();
+  double stored_fore = std::numeric_limits<double>::quiet_NaN();
+  double stored_top = std::numeric_limits<double>::quiet_NaN();
   bool enabled() const { return ratio > 0; }
 };
 
@@ -63,7 +72,12 @@ class FineRegion {
   lbm::Solver& solver() { return *solver_; }
   lbm::Fields fields() { return solver_->fields(); }
   const std::vector<std::uint8_t>& owner() const { return owner_; }  // kFluidNode, kSeaNode, kShipNode per fine node
-  // The whole fine grid in physical units from `f` (fields()), as the table's fine level stores it:
+  // The stored part of the fine grid (FineRegionConfig::stored_*): fine nodes [stored_lo, stored_lo +
+  // stored_shape) of grid(), stored_lo a multiple of the ratio on every axis (a coarse node).
+  const std::array<int, 3>& stored_lo() const { return stored_lo_; }
+  const std::array<int, 3>& stored_shape() const { return stored_shape_; }
+  std::size_t stored_points() const { return static_cast<std::size_t>(stored_shape_[0]) * stored_shape_[1] * stored_shape_[2]; }
+  // The stored part of the fine grid in physical units from `f` (fields()), as the table's fine level stores it:
   // velocity (m/s, mean frame, 3 per node, x fastest), density (kg/m^3: the lattice density times
   // `free_density`); inside the ship its velocity, in the sea at rest, both at the free density.
   void table_frame(const lbm::Fields& f, double free_density, std::vector<float>& velocity, std::vector<float>& density) const;
@@ -96,6 +110,7 @@ class FineRegion {
   bool no_slip_sea_;
   double revoxelise_cells_;
   std::array<int, 3> lo_{}, n_{};
+  std::array<int, 3> stored_lo_{}, stored_shape_{};  // fine nodes
   std::array<Vec3, 8> hull_box_{};
   double time_ = 0, voxel_time_ = 0;
   long steps_ = 0;

@@ -66,11 +66,22 @@ struct PrecomputeResult {
 PrecomputeResult precompute_wake(const PrecomputeOptions& opt);
 
 // Named presets: "default" (the approach scenario's table: NatoGD full scale, the approach
-// wind and ship motion, N = 48, 30 s of frames every 0.1 s; a few minutes on 2 cores) and "tiny" (a
+// wind and ship motion, N = 48, 30 s of frames every 0.1 s; under a minute on 2 cores), "realistic"
+// (the same with a fine region over the superstructure at 364 cells per ship length, the deck and the
+// end of the approach stored at that resolution; docs/benchmarks.md states its cost) and "tiny" (a
 // small table for tests, seconds). ConfigError for other names.
 PrecomputeOptions preset(const std::string& name);
-// Where the "default" preset's table is cached: $SHIP_LRM_WAKE_CACHE/wake_default_v3.h5, else
-// ~/.cache/ship_lrm/wake_default_v3.h5 (made by `ship_lrm wake --preset default`).
-std::string default_table_path();
+// Where a preset's table is cached: $SHIP_LRM_WAKE_CACHE/FILE, else ~/.cache/ship_lrm/FILE, FILE
+// wake_default_v3.h5 or wake_realistic_v1.h5 (made by `ship_lrm wake --preset NAME`). ConfigError for
+// a preset without a cached table.
+std::string preset_table_path(const std::string& name);
+std::string default_table_path();  // preset_table_path("default")
+// The table a user names (`ship_lrm approach --wake`, the ROS parameter wake_file): empty or "default"
+// the default preset's cached table, "realistic" the realistic one's (unless a file of that name is
+// here), else the path as given. `preset` is set to the preset's name, or cleared.
+std::string named_table(const std::string& given, std::string& preset);
+// "the default wake table PATH does not exist yet; make it with `ship_lrm wake --preset default`", or
+// for a path that is no preset's, that it was not found and the command that makes one there.
+std::string missing_table_message(const std::string& path, const std::string& preset);
 
 }  // namespace ship_lrm::wake
