@@ -131,6 +131,16 @@ void Solver::feed_faces_from_grid(const GridWindowView& w0, std::uint64_t serial
     fastest = std::isfinite(speed) ? std::max(fastest, speed) : std::numeric_limits<float>::infinity();
     impedance_fed = impedance_fed || t == CellType::ImpedanceOutlet;
   }
+  if (std::isinf(fastest)) {  // a NaN or an infinity in a fed value: the lattice (its outlets' own state) or the field has diverged
+    for (long b = 0; b < n; ++b) {
+      const float* v = &next[4 * b];
+      if (std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3])) continue;
+      const std::uint32_t c = cells[b];
+      throw DivergenceError(steps_, static_cast<int>(c % nx), static_cast<int>((c / nx) % ny),
+                            static_cast<int>(c / (static_cast<std::uint32_t>(nx) * ny)), v[3], std::numeric_limits<float>::infinity(),
+                            max_setup_speed());
+    }
+  }
   if (!(fastest <= max_setup_speed()))
     throw ConfigError("feed_faces_from_grid: a fed face would reach lattice speed " + std::to_string(fastest) + ", beyond the Mach limit " +
                       std::to_string(kMaxSetupMach) + " c_s");

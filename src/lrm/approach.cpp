@@ -26,7 +26,7 @@ ShipApproach::ShipApproach(const ApproachConfig& cfg, const flight::HelicopterPa
     if (!trim_.converged) {
       std::ostringstream m;
       m << "approach: the Pitt-Peters trim at " << airspeed << " m/s did not converge (" << trim_.message << ")";
-      throw lbm::ConfigError(m.str());
+      throw ConfigError(m.str());
     }
   }
   attitude_ = flight::RigidBodyState::from_euler(trim_.roll, trim_.pitch, 0.0);
@@ -61,8 +61,7 @@ ShipApproach::ShipApproach(const ApproachConfig& cfg, const flight::HelicopterPa
   heli_->set_body_held(!released());
   place(0.0, true, true);
   check_contact();
-  if (!end_reason_.empty())
-    throw lbm::ConfigError("approach: the start puts the landing gear into the ship or the sea (" + end_reason_ + ")");
+  if (!end_reason_.empty()) throw ConfigError("approach: the start puts the landing gear into the ship or the sea (" + end_reason_ + ")");
   record();
 }
 

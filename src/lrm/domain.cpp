@@ -13,12 +13,11 @@ namespace ship_lrm::lrm {
 namespace {
 
 lbm::UnitReference unit_reference(const LrmConfig& c) {
-  if (!(c.reach >= 1.0))
-    throw lbm::ConfigError("LRM: the reach factor a must be >= 1 (domain edge a * 4R), got " + std::to_string(c.reach));
+  if (!(c.reach >= 1.0)) throw ConfigError("LRM: the reach factor a must be >= 1 (domain edge a * 4R), got " + std::to_string(c.reach));
   for (double s : c.outlet_sigma)
-    if (!(s >= 0.0 && s <= 10.0)) throw lbm::ConfigError("LRM: the outlet sigma must lie in [0, 10], got " + std::to_string(s));
-  if (c.nodes < 16) throw lbm::ConfigError("LRM: N must be >= 16 nodes per 4R, got " + std::to_string(c.nodes));
-  if (!(c.radius > 0)) throw lbm::ConfigError("LRM: the rotor radius must be > 0");
+    if (!(s >= 0.0 && s <= 10.0)) throw ConfigError("LRM: the outlet sigma must lie in [0, 10], got " + std::to_string(s));
+  if (c.nodes < 16) throw ConfigError("LRM: N must be >= 16 nodes per 4R, got " + std::to_string(c.nodes));
+  if (!(c.radius > 0)) throw ConfigError("LRM: the rotor radius must be > 0");
   lbm::UnitReference r;
   r.length = 4.0 * c.radius;
   r.nodes = c.nodes;
@@ -97,8 +96,8 @@ lbm::WallMotion LrmDomain::lattice_motion(const WallSurface& wall) const {
 }
 
 void LrmDomain::add_wall(std::shared_ptr<WallSurface> wall) {
-  if (!wall) throw lbm::ConfigError("LRM: add_wall got no wall");
-  if (walls_.size() >= 255) throw lbm::ConfigError("LRM: at most 255 walls");
+  if (!wall) throw ConfigError("LRM: add_wall got no wall");
+  if (walls_.size() >= 255) throw ConfigError("LRM: at most 255 walls");
   walls_.push_back(std::move(wall));
   try {
     update_walls();
@@ -226,19 +225,18 @@ bool LrmDomain::builds_as_moving_wall(const WallSurface& wall) const {
   // Specular reflection imposes no tangential velocity, so a slip body may slide along itself (the
   // ground passing under a rotor in forward flight), never move across itself.
   if (wall.clear_of_faces())
-    throw lbm::ConfigError("LRM: the slip wall '" + wall.name() +
-                           "' cannot be kept clear of the faces (the air held inside it does not slide with a slip wall)");
+    throw ConfigError("LRM: the slip wall '" + wall.name() +
+                      "' cannot be kept clear of the faces (the air held inside it does not slide with a slip wall)");
   if (!m.omega.isZero(0))
-    throw lbm::ConfigError("LRM: the slip wall '" + wall.name() +
-                           "' turns relative to the domain; a slip wall may only slide along itself");
+    throw ConfigError("LRM: the slip wall '" + wall.name() + "' turns relative to the domain; a slip wall may only slide along itself");
   // the surface's normal from the signed distance's gradient at the hub (exact for a plane)
   const double h = units_.dx();
   Vec3 normal;
   for (int a = 0; a < 3; ++a) normal[a] = (wall.signed_distance(h * Vec3::Unit(a)) - wall.signed_distance(-h * Vec3::Unit(a))) / (2 * h);
   const double across = normal.norm() > 0 ? m.velocity.dot(normal.normalized()) : m.velocity.norm();
   if (!(std::abs(across) <= 1e-9 * (1.0 + m.velocity.norm())))
-    throw lbm::ConfigError("LRM: the slip wall '" + wall.name() + "' moves across itself at " + std::to_string(across) +
-                           " m/s; a slip wall may only slide along itself");
+    throw ConfigError("LRM: the slip wall '" + wall.name() + "' moves across itself at " + std::to_string(across) +
+                      " m/s; a slip wall may only slide along itself");
   return false;
 }
 
@@ -302,7 +300,7 @@ void LrmDomain::rebuild(bool carry_flow, bool near_faces) {
   if (!rho.empty()) {
     try {
       solver_->initialize(rho, u);
-    } catch (const lbm::ConfigError&) {
+    } catch (const ConfigError&) {
       // the carried flow itself is beyond the set-up limits: the LRM flow has diverged, the input is fine
       float speed = 0;
       const long c = lbm::first_invalid_setup_cell(rho, u, &speed);
@@ -336,11 +334,11 @@ void LrmDomain::set_stream(const Vec3& air) {
 
 void LrmDomain::set_motion(const Motion& m) {
   for (const Vec3* v : {&m.air_velocity, &m.omega, &m.omega_dot, &m.hub_acceleration})
-    if (!v->allFinite()) throw lbm::ConfigError("LRM: the domain motion is not finite");
+    if (!v->allFinite()) throw ConfigError("LRM: the domain motion is not finite");
   if (!faces_hold_air_ && (m.air_velocity.norm() > 0 || m.omega.norm() > 0))
-    throw lbm::ConfigError("LRM: all six faces are pressure faces, which hold only air at rest; a stream (here " +
-                           std::to_string(m.air_velocity.norm()) +
-                           " m/s) or a turning domain needs a velocity face (e.g. the front: --faces ambient-sides) or impedance faces");
+    throw ConfigError("LRM: all six faces are pressure faces, which hold only air at rest; a stream (here " +
+                      std::to_string(m.air_velocity.norm()) +
+                      " m/s) or a turning domain needs a velocity face (e.g. the front: --faces ambient-sides) or impedance faces");
   // with a face grid the faces do not use air_velocity (set_face_grid)
   const bool far_field_changed = update_far_field(m.air_velocity);
   const bool faces_same =
@@ -395,9 +393,9 @@ void LrmDomain::set_motion(const Motion& m) {
       for (int d = 0; d < 3; ++d) values[4 * k + d] = static_cast<float>(u[d]);
     }
     if (fastest > lbm::kMaxSetupMach * cs)
-      throw lbm::ConfigError("LRM: a face velocity of " + std::to_string(fastest / to_lattice) + " m/s is beyond the lattice Mach limit " +
-                             std::to_string(lbm::kMaxSetupMach) + " at N = " + std::to_string(cfg_.nodes) +
-                             " (largest: " + std::to_string(units_.to_physical_velocity(lbm::kMaxSetupMach * cs)) + " m/s)");
+      throw ConfigError("LRM: a face velocity of " + std::to_string(fastest / to_lattice) + " m/s is beyond the lattice Mach limit " +
+                        std::to_string(lbm::kMaxSetupMach) + " at N = " + std::to_string(cfg_.nodes) +
+                        " (largest: " + std::to_string(units_.to_physical_velocity(lbm::kMaxSetupMach * cs)) + " m/s)");
     push_face_values();
   }
   if (!frame_same) {
@@ -417,8 +415,7 @@ void LrmDomain::set_motion(const Motion& m) {
 
 void LrmDomain::set_face_grid(const lbm::GridWindowView (&window)[2], const std::uint64_t (&serial)[2], const lbm::GridFeed& grid,
                               const Vec3& hub, const Mat3& rotation, const Vec3& hub_velocity) {
-  if (!hub.allFinite() || !rotation.allFinite() || !hub_velocity.allFinite())
-    throw lbm::ConfigError("LRM: the face grid's pose is not finite");
+  if (!hub.allFinite() || !rotation.allFinite() || !hub_velocity.allFinite()) throw ConfigError("LRM: the face grid's pose is not finite");
   FaceGrid next;
   next.feed = grid;
   for (int d = 0; d < 3; ++d) {
@@ -514,7 +511,7 @@ bool LrmDomain::update_far_field(const Vec3& motion_air) {
       built.emplace(cfg_.radius, thrust, cfg_.density, air, units_.dx());
       if (far_field_ground_ < std::numeric_limits<double>::infinity()) built->set_ground(far_field_ground_ - disk_centre.z());
     } catch (const std::invalid_argument& e) {
-      throw lbm::ConfigError(std::string("LRM: the rotor's far field at the faces: ") + e.what());
+      throw ConfigError(std::string("LRM: the rotor's far field at the faces: ") + e.what());
     }
     const rotor::VortexCylinderWake& wake = *built;
     // Its shape depends on the wake's direction only (and the ground), its size on v: rebuilt when the
@@ -548,8 +545,8 @@ bool LrmDomain::update_far_field(const Vec3& motion_air) {
 void LrmDomain::set_far_field_ground(double height) {
   const double disk = (disk_layer_ - centre_) * units_.dx();  // the disk's cell layer below the hub
   if (!(height > disk))                                       // NaN too; infinity (no ground) passes
-    throw lbm::ConfigError("LRM: the rotor far field's ground plane must lie below the disk (" + std::to_string(disk) +
-                           " m below the hub), not " + std::to_string(height) + " m");
+    throw ConfigError("LRM: the rotor far field's ground plane must lie below the disk (" + std::to_string(disk) +
+                      " m below the hub), not " + std::to_string(height) + " m");
   far_field_ground_ = height;
   far_field_stale_ = true;
 }

@@ -52,16 +52,15 @@ void apply_face_setup(const std::string& name, LrmConfig& cfg) {
     cfg.entraining_pressure_faces = true;
     return;
   }
-  throw lbm::ConfigError("unknown face set-up '" + name + "' (" + choices(face_setup_names()) + ")");
+  throw ConfigError("unknown face set-up '" + name + "' (" + choices(face_setup_names()) + ")");
 }
 
 void relax_faces(const std::vector<std::string>& faces, double sigma, LrmConfig& cfg) {
-  if (!(sigma >= 0 && sigma <= 10))
-    throw lbm::ConfigError("the outlets' relaxation sigma must lie in [0, 10], not " + std::to_string(sigma));
+  if (!(sigma >= 0 && sigma <= 10)) throw ConfigError("the outlets' relaxation sigma must lie in [0, 10], not " + std::to_string(sigma));
   const auto& names = face_names();
   for (const auto& f : faces) {
     const auto it = std::find(names.begin(), names.end(), f);
-    if (it == names.end()) throw lbm::ConfigError("unknown face '" + f + "' (" + choices(names) + ")");
+    if (it == names.end()) throw ConfigError("unknown face '" + f + "' (" + choices(names) + ")");
     cfg.outlet_sigma[it - names.begin()] = sigma;
   }
 }

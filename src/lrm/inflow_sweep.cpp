@@ -16,20 +16,20 @@ namespace ship_lrm::lrm {
 namespace {
 
 // The case's domain with its stream and walls, the flow not yet started: what run_isolated_rotor
-// steps and check_isolated_rotor only builds. lbm::ConfigError for a set-up that cannot run;
+// steps and check_isolated_rotor only builds. ConfigError for a set-up that cannot run;
 // ground_effective_height: where the bounce-back wall lies (m below the hub; 0 without a ground).
 std::unique_ptr<LrmDomain> case_domain(const LrmConfig& cfg, const IsolatedRotorCase& c, double& ground_effective_height) {
-  if (!(c.settle >= 0) || !(c.average > 0)) throw lbm::ConfigError("isolated rotor: needs settle >= 0 s and average > 0 s");
-  if (!(c.thrust > 0)) throw lbm::ConfigError("isolated rotor: needs a thrust > 0 N");
-  if (!(c.ground_height >= 0)) throw lbm::ConfigError("isolated rotor: the ground height must be >= 0 m (0: no ground)");
+  if (!(c.settle >= 0) || !(c.average > 0)) throw ConfigError("isolated rotor: needs settle >= 0 s and average > 0 s");
+  if (!(c.thrust > 0)) throw ConfigError("isolated rotor: needs a thrust > 0 N");
+  if (!(c.ground_height >= 0)) throw ConfigError("isolated rotor: the ground height must be >= 0 m (0: no ground)");
   if (!(c.climb >= 0) || !std::isfinite(c.climb))
-    throw lbm::ConfigError("isolated rotor: the climb rate must be a finite number >= 0 m/s (descents are not supported)");
-  if (c.slip_ground && !(c.ground_height > 0)) throw lbm::ConfigError("isolated rotor: a slip ground needs a ground (a height > 0 m)");
+    throw ConfigError("isolated rotor: the climb rate must be a finite number >= 0 m/s (descents are not supported)");
+  if (c.slip_ground && !(c.ground_height > 0)) throw ConfigError("isolated rotor: a slip ground needs a ground (a height > 0 m)");
   if (c.climb > 0 && c.ground_height > 0)
-    throw lbm::ConfigError("isolated rotor: a climb over a ground plane has no steady state; give either a climb rate or a ground");
+    throw ConfigError("isolated rotor: a climb over a ground plane has no steady state; give either a climb rate or a ground");
   auto domain = std::make_unique<LrmDomain>(cfg);
   LrmDomain& d = *domain;
-  d.set_stream(rotor::Vec3(-c.speed, 0, c.climb));
+  d.set_stream(Vec3(-c.speed, 0, c.climb));
   if (c.fuselage) d.add_wall(std::make_shared<Fuselage>());
   ground_effective_height = 0;
   if (c.ground_height > 0) {
@@ -38,11 +38,11 @@ std::unique_ptr<LrmDomain> case_domain(const LrmConfig& cfg, const IsolatedRotor
       std::ostringstream what;
       what << "isolated rotor: a ground " << c.ground_height << " m below the hub lies outside the domain (" << half
            << " m to the bottom face, the ground at least three cells above it); raise the reach a or lower the height";
-      throw lbm::ConfigError(what.str());
+      throw ConfigError(what.str());
     }
     auto ground = std::make_shared<GroundPlane>(c.ground_height);
     RigidMotion m;
-    m.velocity = rotor::Vec3(-c.speed, 0, 0);  // the ground passes under the rotor at the flight speed
+    m.velocity = Vec3(-c.speed, 0, 0);  // the ground passes under the rotor at the flight speed
     ground->set_motion(m);
     ground->set_slip(c.slip_ground);
     d.add_wall(ground);
@@ -68,7 +68,7 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
   LrmDomain& d = *domain;
   d.restart_flow();
   rotor::RotorForceHarmonics h;
-  h.cos[0] = rotor::Vec3(0, 0, -c.thrust);
+  h.cos[0] = Vec3(0, 0, -c.thrust);
   d.set_rotor_forces(h);
   r.cells_per_edge = d.cells_per_edge();
   const auto t0 = std::chrono::steady_clock::now();
@@ -113,8 +113,8 @@ IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotor
   s.radius = cfg.radius;
   s.rotor_speed = c.rotor_speed;
   s.density = cfg.density;
-  s.hub_velocity = rotor::Vec3(c.speed, 0, -c.climb);  // the hub moves up (-z) in a climb
-  s.aero_force = rotor::Vec3(0, 0, -c.thrust);
+  s.hub_velocity = Vec3(c.speed, 0, -c.climb);  // the hub moves up (-z) in a climb
+  s.aero_force = Vec3(0, 0, -c.thrust);
   const Eigen::Vector3d lam = rotor::PittPetersInflow::steady_states(s, Eigen::Vector3d::Zero());
   r.pitt_peters_mean = lam[0] * c.rotor_speed * cfg.radius;
   r.pitt_peters_cosine = lam[2] * c.rotor_speed * cfg.radius;

@@ -41,8 +41,8 @@ template <typename Inflow, typename Make>
 std::pair<std::unique_ptr<flight::Helicopter>, Inflow*> trimmed_helicopter(const flight::HelicopterParameters& p, LrmConfig cfg,
                                                                            double seconds, double speed, double yaw_rate,
                                                                            Make make_inflow) {
-  if (!(seconds > 0)) throw lbm::ConfigError("lrm benchmark: needs seconds > 0");
-  if (!std::isfinite(yaw_rate)) throw lbm::ConfigError("lrm benchmark: the yaw rate is not finite");
+  if (!(seconds > 0)) throw ConfigError("lrm benchmark: needs seconds > 0");
+  if (!std::isfinite(yaw_rate)) throw ConfigError("lrm benchmark: the yaw rate is not finite");
   cfg.radius = p.main_rotor.radius;
   cfg.density = p.density;
   flight::Helicopter pp(p);

@@ -8,9 +8,9 @@ namespace ship_lrm::lrm {
 
 RealTimeInflow::RealTimeInflow(std::unique_ptr<rotor::InflowModel> slow, double interval, double budget, RealTimeMode mode)
     : slow_(std::move(slow)), interval_(interval), mode_(mode), budget_(budget) {
-  if (!slow_) throw lbm::ConfigError("real-time inflow: no model to run");
-  if (!(budget > 0)) throw lbm::ConfigError("real-time inflow: the deadline budget must be > 0 s");
-  if (!(interval > 0)) throw lbm::ConfigError("real-time inflow: the slow model's interval must be > 0 s");
+  if (!slow_) throw ConfigError("real-time inflow: no model to run");
+  if (!(budget > 0)) throw ConfigError("real-time inflow: the deadline budget must be > 0 s");
+  if (!(interval > 0)) throw ConfigError("real-time inflow: the slow model's interval must be > 0 s");
   thread_ = std::thread([this] { worker(); });
 }
 

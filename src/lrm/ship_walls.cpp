@@ -8,7 +8,7 @@ namespace ship_lrm::lrm {
 
 ShipWall::ShipWall(std::shared_ptr<const wake::ShipGeometry> ship, std::shared_ptr<const wake::ShipMotion> motion)
     : ship_(std::move(ship)), motion_(std::move(motion)) {
-  if (!ship_ || !motion_) throw lbm::ConfigError("ShipWall: no ship geometry or motion");
+  if (!ship_ || !motion_) throw ConfigError("ShipWall: no ship geometry or motion");
 }
 
 void ShipWall::place(double t, const DomainPose& pose) {

@@ -9,7 +9,7 @@
 namespace ship_lrm::lrm {
 
 WakeFaceFeed::WakeFaceFeed(std::shared_ptr<wake::WakeTable> table) : table_(std::move(table)) {
-  if (!table_) throw lbm::ConfigError("WakeFaceFeed: no wake table");
+  if (!table_) throw ConfigError("WakeFaceFeed: no wake table");
 }
 
 bool WakeFaceFeed::apply(LrmDomain& domain, double t, const Pose& pose, bool force) {
@@ -57,7 +57,7 @@ std::string WakeFeedBenchmark::to_json() const {
 }
 
 WakeFeedBenchmark run_wake_feed_benchmark(const std::string& table, const LrmConfig& cfg, int steps, double speed, double height) {
-  if (steps < 1) throw lbm::ConfigError("bench wake: steps must be >= 1");
+  if (steps < 1) throw ConfigError("bench wake: steps must be >= 1");
   auto t = std::make_shared<wake::WakeTable>(table);
   const auto& info = t->info();
   LrmConfig c = config_for_stream(cfg, std::abs(info.free_stream[0]) + speed);

@@ -106,8 +106,8 @@ std::function<int()> add_approach_command(CLI::App& app) {
     if (o->cfg.inflow != "lrm")
       refuse_lrm_options(*cmd, {"--N", "--reach", "--backend", "--no-ship", "--no-fuselage", "--plane-mean-from", "--no-rotor-forces"});
     if (o->plane_from && *o->plane_from >= o->cfg.duration)
-      throw lbm::ConfigError("--plane-mean-from " + std::to_string(*o->plane_from) + " s lies beyond the run's end (--duration " +
-                             std::to_string(o->cfg.duration) + " s): nothing to average");
+      throw ConfigError("--plane-mean-from " + std::to_string(*o->plane_from) + " s lies beyond the run's end (--duration " +
+                        std::to_string(o->cfg.duration) + " s): nothing to average");
     lrm::ApproachConfig cfg = o->cfg;
     cfg.lrm.backend = lbm::parse_backend(o->backend);
     cfg.ship_walls = !o->no_ship;
@@ -117,11 +117,11 @@ std::function<int()> add_approach_command(CLI::App& app) {
     o->faces.apply(cfg.lrm);
     std::string preset;
     cfg.table = wake::named_table(cfg.table, preset);
-    if (!fs::exists(cfg.table)) throw lbm::ConfigError(wake::missing_table_message(cfg.table, preset));
-    if (o->pipelined && !o->realtime) throw lbm::ConfigError("--pipelined needs --realtime");
+    if (!fs::exists(cfg.table)) throw ConfigError(wake::missing_table_message(cfg.table, preset));
+    if (o->pipelined && !o->realtime) throw ConfigError("--pipelined needs --realtime");
     if (o->plane_from && o->realtime)
-      throw lbm::ConfigError("--plane-mean-from needs a run in simulated time (with --realtime the LRM's own thread owns the domain)");
-    if (o->realtime && cfg.inflow != "lrm") throw lbm::ConfigError("--realtime needs --inflow lrm (Pitt-Peters has no deadlines to meet)");
+      throw ConfigError("--plane-mean-from needs a run in simulated time (with --realtime the LRM's own thread owns the domain)");
+    if (o->realtime && cfg.inflow != "lrm") throw ConfigError("--realtime needs --inflow lrm (Pitt-Peters has no deadlines to meet)");
     const fs::path dir(o->out);
     std::vector<std::string> outputs = {"approach.csv", "approach.png", "approach_wavelets.png", "approach_summary.csv"};
     if (o->plane_from) add_plane_outputs(outputs, "centre_plane_mean");

@@ -123,7 +123,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
       c.backend = lbm::parse_backend(lo->backend);
       lo->faces.apply(c);
       const auto p = flight::load_default_bo105();
-      if (lo->pipelined && !lo->realtime) throw lbm::ConfigError("bench lrm: --pipelined needs --realtime");
+      if (lo->pipelined && !lo->realtime) throw ConfigError("bench lrm: --pipelined needs --realtime");
       const auto mode = lo->pipelined ? lrm::RealTimeMode::Pipelined : lrm::RealTimeMode::LockStep;
       const double yaw_rate = lo->yaw_rate * M_PI / 180.0;
       auto r = lo->realtime ? lrm::run_realtime_benchmark(p, c, lo->seconds, lo->speed, lo->warm_up, mode, yaw_rate)

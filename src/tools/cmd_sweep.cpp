@@ -110,7 +110,7 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
     if (!ground->parsed()) return -1;
     const bool hover = o->mode == "hover";
     if (hover && ground->get_option("--speeds")->count() > 0)
-      throw lbm::ConfigError("--speeds applies to --mode forward (hover sweeps the heights at zero speed)");
+      throw ConfigError("--speeds applies to --mode forward (hover sweeps the heights at zero speed)");
     const auto heights = parse_number_list(o->heights.empty() ? (hover ? "0.5,0.6,0.7,0.8,1,1.25,1.5,2" : "0.5,0.6,0.8,1") : o->heights,
                                            "--heights", 0.0, 1000.0, "R");
     const auto speeds = hover ? std::vector<double>{0.0} : parse_speeds(o->speeds);
@@ -122,7 +122,7 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
         std::ostringstream what;
         what << "--heights: z/R must be at least " << kLowestHeight
              << " (below it Cheeseman-Bennett's 1 - (R/4z)^2 is negative and the disk all but sits on the ground), got " << h;
-        throw lbm::ConfigError(what.str());
+        throw ConfigError(what.str());
       }
     if (hover && ground->get_option("--faces")->count() == 0) {
       o->face.faces = "ambient";
@@ -161,10 +161,10 @@ std::function<int()> add_ground_sweep(CLI::App& sweep) {
       for (double h : heights) {
         try {
           lrm::check_isolated_rotor(run_cfg, case_for(v, h));
-        } catch (const lbm::ConfigError& e) {
+        } catch (const ConfigError& e) {
           std::ostringstream what;
           what << "--heights: z/R = " << h << " at N = " << cfg.nodes << ", a = " << cfg.reach << ": " << e.what();
-          throw lbm::ConfigError(what.str());
+          throw ConfigError(what.str());
         }
       }
     }

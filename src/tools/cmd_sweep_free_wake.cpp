@@ -77,7 +77,7 @@ std::function<int()> add_free_wake_sweep(CLI::App& sweep) {
     for (double v : speeds) {  // every case checked before any run
       rotor::FreeWakeDiskConfig c;
       c.radius = lrm_defaults.radius, c.density = lrm_defaults.density, c.thrust = o->thrust;
-      c.air = rotor::Vec3(-v, 0, o->climb);
+      c.air = Vec3(-v, 0, o->climb);
       c.ring_points = o->ring_points, c.core = o->core, c.settle = o->settle, c.average = o->average;
       rotor::set_wake_lengths(c, o->spacing, o->length, o->merge);
       if (c.wake_age / c.step > 20000 || c.step > 0.2)

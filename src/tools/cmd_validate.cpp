@@ -71,7 +71,7 @@ std::function<int()> add_stream_stability_command(CLI::App& validate) {
     if (!o->csv.empty()) {
       check_output_file(o->csv, "--csv", o->overwrite);
       csv.open(o->csv);
-      if (!csv) throw lbm::ConfigError("validate stream-stability: cannot write " + o->csv);
+      if (!csv) throw ConfigError("validate stream-stability: cannot write " + o->csv);
       csv << "mach,step,max_deviation,seeded_mode\n";
     }
     std::printf("%-6s %-10s %-12s %-12s %s\n", "Mach", "steps", "max|u-U| 0", "max|u-U| end", "verdict");

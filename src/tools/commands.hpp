@@ -24,10 +24,10 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
 // Throws CLI::ValidationError naming the option when a floating-point option of the parsed command
 // (app and its chosen sub-commands) is not a finite number: "nan" passes CLI11's range checks.
 void reject_non_finite_numbers(const CLI::App& app);
-// Output paths (output_files.cpp). A file the command writes: lbm::ConfigError when it is a folder,
+// Output paths (output_files.cpp). A file the command writes: ConfigError when it is a folder,
 // or exists and overwrite is not set.
 void check_output_file(const std::string& path, const std::string& option, bool overwrite);
-// Creates dir (lbm::ConfigError when it is a file); refuses to overwrite an existing file of `names`
+// Creates dir (ConfigError when it is a file); refuses to overwrite an existing file of `names`
 // unless overwrite is set.
 void prepare_output(const std::filesystem::path& dir, const std::vector<std::string>& names, bool overwrite);
 // The progress of a long run on stderr (progress_line.cpp): "label [####    ]  45.0 %  ETA 812 s

@@ -27,7 +27,7 @@ struct LrmFaceOptions {
   void add_to(CLI::App& cmd);
   // The faces column of the CSVs: the set-up, the relaxed outlets when there are any, the far field.
   std::string label() const;
-  // Sets cfg's faces, outlet relaxation, far field, collision and Smagorinsky constant; lbm::ConfigError
+  // Sets cfg's faces, outlet relaxation, far field, collision and Smagorinsky constant; ConfigError
   // for an unknown set-up.
   void apply(lrm::LrmConfig& cfg) const;
 };

@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ValidationError& e) {
     std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
     return 2;
-  } catch (const ship_lrm::lbm::ConfigError& e) {
+  } catch (const ship_lrm::ConfigError& e) {
     std::cerr << "ship_lrm: invalid input: " << e.what() << "\n";
     return 2;
   } catch (const ship_lrm::lbm::DivergenceError& e) {

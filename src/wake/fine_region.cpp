@@ -43,15 +43,15 @@ FineRegion::FineRegion(const FineRegionConfig& cfg, const WakeConfig& wake, cons
       backend_(wake.backend),
       no_slip_sea_(wake.no_slip_sea),
       revoxelise_cells_(wake.revoxelise_cells) {
-  if (!ship_ || !motion_) throw lbm::ConfigError("fine region: no ship or no motion");
+  if (!ship_ || !motion_) throw ConfigError("fine region: no ship or no motion");
   if (cfg.ratio < 1 || cfg.ratio > kMaxRatio)
-    throw lbm::ConfigError("fine region: the refinement ratio must be 1 .. " + std::to_string(kMaxRatio) +
-                           " fine cells per coarse cell, got " + std::to_string(cfg.ratio));
+    throw ConfigError("fine region: the refinement ratio must be 1 .. " + std::to_string(kMaxRatio) + " fine cells per coarse cell, got " +
+                      std::to_string(cfg.ratio));
   for (double v : {cfg.aft, cfg.fore, cfg.half_width, cfg.top})
-    if (!std::isfinite(v)) throw lbm::ConfigError("fine region: the box must be finite");
-  if (!(cfg.start >= 0) || !std::isfinite(cfg.start)) throw lbm::ConfigError("fine region: its start time must be >= 0 s");
+    if (!std::isfinite(v)) throw ConfigError("fine region: the box must be finite");
+  if (!(cfg.start >= 0) || !std::isfinite(cfg.start)) throw ConfigError("fine region: its start time must be >= 0 s");
   if (!(cfg.fore > cfg.aft) || !(cfg.half_width > 0) || !(cfg.top > 0))
-    throw lbm::ConfigError("fine region: the box needs fore > aft, a half width > 0 and a top > 0 above the waterline (ship lengths)");
+    throw ConfigError("fine region: the box needs fore > aft, a half width > 0 and a top > 0 above the waterline (ship lengths)");
   const double l = ship_->datum().length, dx = coarse.dx, water = ship_->datum().waterline;
   const int jc = (coarse.ny - 1) / 2, half = static_cast<int>(std::ceil(cfg.half_width * l / dx - 1e-9));
   const int i0 = static_cast<int>(std::floor((cfg.aft * l - coarse.origin.x()) / dx + 1e-9));
@@ -68,8 +68,7 @@ FineRegion::FineRegion(const FineRegionConfig& cfg, const WakeConfig& wake, cons
                         " .. " + std::to_string(i1) + " of " + std::to_string(coarse.nx) + ", y " + std::to_string(j0) + " .. " +
                         std::to_string(j1) + " of " + std::to_string(coarse.ny) + ", z " + std::to_string(k0) + " .. " +
                         std::to_string(k1) + " of " + std::to_string(coarse.nz) + ")");
-  if (i1 - i0 < 4 || half < 2 || k1 - k0 < 4)
-    throw lbm::ConfigError("fine region (" + box + ") spans fewer than 4 coarse cells along an axis");
+  if (i1 - i0 < 4 || half < 2 || k1 - k0 < 4) throw ConfigError("fine region (" + box + ") spans fewer than 4 coarse cells along an axis");
   lo_ = {i0, j0, k0};
   n_ = {i1 - i0 + 2, j1 - j0 + 2, k1 - k0 + 2};
   grid_.origin = coarse.position(i0, j0, k0);
@@ -84,16 +83,16 @@ FineRegion::FineRegion(const FineRegionConfig& cfg, const WakeConfig& wake, cons
   const double eps = 1e-9;
   if (!std::isfinite(s_aft) || !std::isfinite(s_fore) || !std::isfinite(s_top) || s_aft < cfg.aft - eps || s_fore > cfg.fore + eps ||
       !(s_fore > s_aft) || !(s_top > 0) || s_top > cfg.top + eps)
-    throw lbm::ConfigError("fine region: the stored part (x " + metres(s_aft * l) + " .. " + metres(s_fore * l) + ", " + metres(s_top * l) +
-                           " above the waterline) must lie inside the box (" + box + ") with fore > aft and a top > 0");
+    throw ConfigError("fine region: the stored part (x " + metres(s_aft * l) + " .. " + metres(s_fore * l) + ", " + metres(s_top * l) +
+                      " above the waterline) must lie inside the box (" + box + ") with fore > aft and a top > 0");
   const int si0 = std::max(i0, static_cast<int>(std::floor((s_aft * l - coarse.origin.x()) / dx + eps)));
   const int si1 = std::min(i1, static_cast<int>(std::ceil((s_fore * l - coarse.origin.x()) / dx - eps)));
   const int sk0 = std::max(k0, static_cast<int>(std::floor((water - s_top * l - coarse.origin.z()) / dx + eps)));
   if (si1 - si0 < 4 || k1 - sk0 < 4)
-    throw lbm::ConfigError("fine region: the stored part spans fewer than 4 coarse cells along x or z (x " + metres(s_aft * l) + " .. " +
-                           metres(s_fore * l) + ", " + metres(s_top * l) +
-                           " above the waterline): the table blends it into the coarse "
-                           "grid over 2 coarse cells at each face");
+    throw ConfigError("fine region: the stored part spans fewer than 4 coarse cells along x or z (x " + metres(s_aft * l) + " .. " +
+                      metres(s_fore * l) + ", " + metres(s_top * l) +
+                      " above the waterline): the table blends it into the coarse "
+                      "grid over 2 coarse cells at each face");
   stored_lo_ = {cfg.ratio * (si0 - i0), 0, cfg.ratio * (sk0 - k0)};
   stored_shape_ = {cfg.ratio * (si1 - si0) + 1, grid_.ny, cfg.ratio * (k1 - sk0) + 1};
   hull_box_ = hull_box(*ship_);
@@ -164,8 +163,8 @@ lbm::GridWindowView FineRegion::view(const std::vector<float>& w) const {
 
 void FineRegion::check_window(const std::vector<float>& w) const {
   if (w.size() != 3 * window_points())
-    throw lbm::ConfigError("fine region: a coarse window of " + std::to_string(w.size()) + " values, expected " +
-                           std::to_string(3 * window_points()));
+    throw ConfigError("fine region: a coarse window of " + std::to_string(w.size()) + " values, expected " +
+                      std::to_string(3 * window_points()));
 }
 
 void FineRegion::rebuild(double t, bool carry) {
@@ -304,7 +303,7 @@ FineRegion::State FineRegion::state() {
 }
 
 void FineRegion::restore(const State& s) {
-  if (s.steps < 0) throw lbm::ConfigError("fine region: checkpoint with a negative step count");
+  if (s.steps < 0) throw ConfigError("fine region: checkpoint with a negative step count");
   owner_.clear();
   rebuild(s.voxel_time, false);
   solver_->restore(s.solver_steps, s.populations);

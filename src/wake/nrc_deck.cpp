@@ -53,9 +53,9 @@ std::array<int, 2> nest_resolution(int cells_per_length) {
       best = r;
   }
   if (best == 0)
-    throw lbm::ConfigError("nrc-deck: " + std::to_string(cells_per_length) + " cells per ship length do not nest: give a multiple of " +
-                           "2 .. " + std::to_string(kMaxNestRatio) + " over at least " + std::to_string(kMinCoarseCells) +
-                           " coarse cells per length (e.g. 364 = 52 x 7, 546 = 78 x 7)");
+    throw ConfigError("nrc-deck: " + std::to_string(cells_per_length) + " cells per ship length do not nest: give a multiple of " +
+                      "2 .. " + std::to_string(kMaxNestRatio) + " over at least " + std::to_string(kMinCoarseCells) +
+                      " coarse cells per length (e.g. 364 = 52 x 7, 546 = 78 x 7)");
   return {cells_per_length / best, best};
 }
 
@@ -72,11 +72,11 @@ NrcDeckResult run_nrc_deck(const NrcDeckOptions& in) {
   r.options = with_quick_setting(in);
   NrcDeckOptions& o = r.options;
   if (o.motion != "static" && o.motion != "pitch" && o.motion != "heave")
-    throw lbm::ConfigError("nrc-deck: --motion must be static, pitch or heave (thesis 7.2), got '" + o.motion + "'");
-  if (!(o.seconds > 0) || !std::isfinite(o.seconds) || o.seconds > 1e4) throw lbm::ConfigError("nrc-deck: --seconds must be in (0, 1e4]");
+    throw ConfigError("nrc-deck: --motion must be static, pitch or heave (thesis 7.2), got '" + o.motion + "'");
+  if (!(o.seconds > 0) || !std::isfinite(o.seconds) || o.seconds > 1e4) throw ConfigError("nrc-deck: --seconds must be in (0, 1e4]");
   if (!(o.sample_interval > 0) || !(o.sample_interval <= o.seconds))
-    throw lbm::ConfigError("nrc-deck: the sample interval must be > 0 and at most the statistics time");
-  if (o.out_dir.empty()) throw lbm::ConfigError("nrc-deck: no output folder");
+    throw ConfigError("nrc-deck: the sample interval must be > 0 and at most the statistics time");
+  if (o.out_dir.empty()) throw ConfigError("nrc-deck: no output folder");
   const auto nest = nest_resolution(o.cells_per_length);
   r.coarse_cells_per_length = nest[0];
   r.ratio = nest[1];
@@ -124,7 +124,7 @@ NrcDeckResult run_nrc_deck(const NrcDeckOptions& in) {
   p.probes_on_ship = true;  // the NRC model's COBRA probes are fixed to the ship (thesis 7.1)
   std::error_code ec;
   fs::create_directories(o.out_dir, ec);
-  if (!fs::is_directory(o.out_dir)) throw lbm::ConfigError("nrc-deck: cannot create the folder '" + o.out_dir + "'");
+  if (!fs::is_directory(o.out_dir)) throw ConfigError("nrc-deck: cannot create the folder '" + o.out_dir + "'");
   p.out = (fs::path(o.out_dir) / ("nrc_deck_" + o.motion + "_N" + std::to_string(o.cells_per_length) + ".h5")).string();
   r.run = precompute_wake(p);
   if (r.run.interrupted) return r;

@@ -14,7 +14,7 @@ namespace ship_lrm::wake {
 ProbeFrame parse_probe_frame(const std::string& name) {
   if (name == "ship") return ProbeFrame::Ship;
   if (name == "tunnel") return ProbeFrame::Tunnel;
-  throw lbm::ConfigError("unknown probe frame '" + name + "' (ship or tunnel)");
+  throw ConfigError("unknown probe frame '" + name + "' (ship or tunnel)");
 }
 
 std::string to_string(ProbeFrame f) { return f == ProbeFrame::Ship ? "ship" : "tunnel"; }
@@ -31,10 +31,10 @@ std::array<double, 3> from_ship_frame(const std::array<double, 3>& p, ProbeFrame
 }
 
 std::vector<std::array<double, 3>> read_probe_csv(const std::string& path) {
-  if (std::filesystem::is_directory(path)) throw lbm::ConfigError("probes: '" + path + "' is a directory, not a CSV file");
-  if (!std::filesystem::is_regular_file(path)) throw lbm::ConfigError("probes: '" + path + "' does not exist or is not a regular file");
+  if (std::filesystem::is_directory(path)) throw ConfigError("probes: '" + path + "' is a directory, not a CSV file");
+  if (!std::filesystem::is_regular_file(path)) throw ConfigError("probes: '" + path + "' does not exist or is not a regular file");
   std::ifstream in(path);
-  if (!in) throw lbm::ConfigError("probes: cannot read '" + path + "'");
+  if (!in) throw ConfigError("probes: cannot read '" + path + "'");
   std::vector<std::array<double, 3>> points;
   std::string line;
   bool first_row = true;
@@ -60,14 +60,13 @@ std::vector<std::array<double, 3>> read_probe_csv(const std::string& path) {
     first_row = false;
     if (header) continue;
     if (!numbers || n != 3)
-      throw lbm::ConfigError("probes: '" + path + "' line " + std::to_string(number) + ": expected three numbers x,y,z (m), got '" + line +
-                             "'");
+      throw ConfigError("probes: '" + path + "' line " + std::to_string(number) + ": expected three numbers x,y,z (m), got '" + line + "'");
     for (double v : p)
-      if (!std::isfinite(v)) throw lbm::ConfigError("probes: '" + path + "' line " + std::to_string(number) + ": a value is not finite");
+      if (!std::isfinite(v)) throw ConfigError("probes: '" + path + "' line " + std::to_string(number) + ": a value is not finite");
     points.push_back(p);
-    if (points.size() > 10000) throw lbm::ConfigError("probes: '" + path + "' has more than 10000 points");
+    if (points.size() > 10000) throw ConfigError("probes: '" + path + "' has more than 10000 points");
   }
-  if (points.empty()) throw lbm::ConfigError("probes: '" + path + "' holds no points");
+  if (points.empty()) throw ConfigError("probes: '" + path + "' holds no points");
   return points;
 }
 

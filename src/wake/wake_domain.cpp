@@ -11,9 +11,9 @@
 namespace ship_lrm::wake {
 lbm::UnitConverter wake_units(const WakeConfig& cfg, double ship_length) {
   if (cfg.cells_per_length < 16)
-    throw lbm::ConfigError("wake: N must be >= 16 cells per ship length, got " + std::to_string(cfg.cells_per_length));
-  if (!(cfg.wind > 0) || !std::isfinite(cfg.wind)) throw lbm::ConfigError("wake: the wind must be > 0 m/s");
-  if (!(ship_length > 0)) throw lbm::ConfigError("wake: the ship has no length");
+    throw ConfigError("wake: N must be >= 16 cells per ship length, got " + std::to_string(cfg.cells_per_length));
+  if (!(cfg.wind > 0) || !std::isfinite(cfg.wind)) throw ConfigError("wake: the wind must be > 0 m/s");
+  if (!(ship_length > 0)) throw ConfigError("wake: the ship has no length");
   lbm::UnitReference r;
   r.length = ship_length;
   r.nodes = cfg.cells_per_length + 1;  // dx = l / N
@@ -26,10 +26,9 @@ lbm::UnitConverter wake_units(const WakeConfig& cfg, double ship_length) {
 
 ShipWakeDomain::ShipWakeDomain(const WakeConfig& cfg, std::shared_ptr<const ShipGeometry> ship, std::shared_ptr<const ShipMotion> motion)
     : cfg_(cfg), ship_(std::move(ship)), motion_(std::move(motion)), units_(wake_units(cfg, ship_ ? ship_->datum().length : 0.0)) {
-  if (!ship_ || !motion_) throw lbm::ConfigError("wake: no ship or no motion");
-  if (!(cfg.smagorinsky >= 0)) throw lbm::ConfigError("wake: the Smagorinsky constant must be >= 0");
-  if (cfg.fine.ratio < 0)
-    throw lbm::ConfigError("wake: the fine region's ratio must be >= 0 (0: none), got " + std::to_string(cfg.fine.ratio));
+  if (!ship_ || !motion_) throw ConfigError("wake: no ship or no motion");
+  if (!(cfg.smagorinsky >= 0)) throw ConfigError("wake: the Smagorinsky constant must be >= 0");
+  if (cfg.fine.ratio < 0) throw ConfigError("wake: the fine region's ratio must be >= 0 (0: none), got " + std::to_string(cfg.fine.ratio));
   const double N = cfg.cells_per_length, l = ship_->datum().length;
   nx_ = static_cast<int>(std::lround(cfg.domain_length * N));
   ny_ = 2 * static_cast<int>(std::lround(0.5 * cfg.domain_width * N)) + 1;  // odd: a row of nodes on the midline
@@ -304,10 +303,10 @@ ShipWakeDomain::State ShipWakeDomain::state() {
 }
 
 void ShipWakeDomain::restore(const State& s) {
-  if (s.steps < 0) throw lbm::ConfigError("wake: checkpoint with a negative step count");
+  if (s.steps < 0) throw ConfigError("wake: checkpoint with a negative step count");
   if (s.has_fine != static_cast<bool>(fine_))
-    throw lbm::ConfigError(std::string("wake: a checkpoint ") + (s.has_fine ? "with" : "without") + " a fine region for a domain " +
-                           (fine_ ? "with" : "without") + " one");
+    throw ConfigError(std::string("wake: a checkpoint ") + (s.has_fine ? "with" : "without") + " a fine region for a domain " +
+                      (fine_ ? "with" : "without") + " one");
   owner_.clear();
   rebuild(s.voxel_time, false);
   solver_->restore(s.solver_steps, s.populations);

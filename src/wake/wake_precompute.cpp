@@ -182,7 +182,7 @@ Checkpoint load(const std::string& path, std::uint64_t limit, std::uint64_t fine
 
 std::string preset_table_path(const std::string& name) {
   const char* file = name == "default" ? "wake_default_v3.h5" : name == "realistic" ? "wake_realistic_v1.h5" : nullptr;
-  if (!file) throw lbm::ConfigError("the wake preset '" + name + "' has no cached table (default, realistic)");
+  if (!file) throw ConfigError("the wake preset '" + name + "' has no cached table (default, realistic)");
   if (const char* p = std::getenv("SHIP_LRM_WAKE_CACHE")) return std::string(p) + "/" + file;
   const char* home = std::getenv("HOME");
   return std::string(home ? home : ".") + "/.cache/ship_lrm/" + file;
@@ -255,13 +255,13 @@ PrecomputeOptions preset(const std::string& name) {
     o.half_precision = false;
     return o;
   }
-  throw lbm::ConfigError("unknown wake preset '" + name + "' (default, realistic, tiny)");
+  throw ConfigError("unknown wake preset '" + name + "' (default, realistic, tiny)");
 }
 
 PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
-  if (opt.out.empty()) throw lbm::ConfigError("wake: no output file (--out FILE.h5)");
+  if (opt.out.empty()) throw ConfigError("wake: no output file (--out FILE.h5)");
   if (!(opt.duration > 0) || !(opt.frame_interval > 0) || !std::isfinite(opt.duration))
-    throw lbm::ConfigError("wake: duration and frame interval must be > 0");
+    throw ConfigError("wake: duration and frame interval must be > 0");
   auto ship = std::shared_ptr<const ShipGeometry>(make_ship(opt.ship, opt.scale));
   const double scale = ship_scale(opt.scale);
   const ShipDatum& sd = ship->datum();
@@ -271,17 +271,17 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
   const double startup = opt.startup >= 0 ? opt.startup : opt.domain.domain_length * sd.length / opt.domain.wind;
   const double stats_interval = opt.stats_interval > 0 ? opt.stats_interval : opt.frame_interval;
   if (opt.frame_interval < dt)
-    throw lbm::ConfigError("wake: the frame interval " + std::to_string(opt.frame_interval) + " s is shorter than the time step " +
-                           std::to_string(dt) + " s");
+    throw ConfigError("wake: the frame interval " + std::to_string(opt.frame_interval) + " s is shorter than the time step " +
+                      std::to_string(dt) + " s");
   const long total_steps = static_cast<long>(std::ceil((startup + opt.duration) / dt + 0.5));
   const int total_frames = static_cast<int>(std::floor(opt.duration / opt.frame_interval + 1e-9)) + 1;
   const auto* periodic = dynamic_cast<const SinusoidalMotion*>(motion.get());
   const double period = periodic ? 1.0 / periodic->params().frequency : 0.0;
   FineRegion* fine = domain.fine();
   if (fine && opt.domain.fine.start > startup + 1e-12)
-    throw lbm::ConfigError("wake: the fine region starts at " + std::to_string(opt.domain.fine.start) +
-                           " s, after the first frame and statistics sample (the start-up, " + std::to_string(startup) +
-                           " s); start it earlier");
+    throw ConfigError("wake: the fine region starts at " + std::to_string(opt.domain.fine.start) +
+                      " s, after the first frame and statistics sample (the start-up, " + std::to_string(startup) +
+                      " s); start it earlier");
 
   PrecomputeResult r;
   r.table = opt.out;
@@ -300,7 +300,7 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
   ProbeSeries& probes = r.probes;
   for (const auto& p : opt.probes) {
     for (double v : p)
-      if (!std::isfinite(v)) throw lbm::ConfigError("wake: a probe point is not finite");
+      if (!std::isfinite(v)) throw ConfigError("wake: a probe point is not finite");
     probes.points.push_back(p);
   }
   // the air at point q (mean frame) from the finest level that covers it
@@ -334,10 +334,10 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
       std::array<double, 3> u{};
       const auto& p = probes.points[k];
       if (!probe_velocity(c, fine ? &f : nullptr, p, u, domain.time()))
-        throw lbm::ConfigError("wake: probe " + std::to_string(k) + " at (" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " +
-                               std::to_string(p[2]) +
-                               ") m (ship frame) is not in the fluid: inside or next to the ship or the sea, or "
-                               "outside the domain");
+        throw ConfigError("wake: probe " + std::to_string(k) + " at (" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " +
+                          std::to_string(p[2]) +
+                          ") m (ship frame) is not in the fluid: inside or next to the ship or the sea, or "
+                          "outside the domain");
     }
   }
 
@@ -358,8 +358,7 @@ PrecomputeResult precompute_wake(const PrecomputeOptions& opt) {
   if (opt.resume && fs::exists(ckpt)) {
     Checkpoint c = load(ckpt, domain.cells() * 3 + 16, r.fine_cells * 3 + 16);
     if (c.signature != sig)
-      throw lbm::ConfigError("wake: checkpoint '" + ckpt + "' belongs to another run (" + c.signature +
-                             "); delete it or choose another --out");
+      throw ConfigError("wake: checkpoint '" + ckpt + "' belongs to another run (" + c.signature + "); delete it or choose another --out");
     if (c.probes.u.size() != 3 * c.probes.time.size() * probes.points.size())
       throw TableError("checkpoint '" + ckpt + "': its probe series does not match the probes");
     domain.restore(c.state);

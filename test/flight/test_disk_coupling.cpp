@@ -7,6 +7,7 @@
 #include "ship_lrm/rotor/disk_coupling.hpp"
 
 using namespace ship_lrm::rotor;
+using ship_lrm::Vec3;
 
 TEST(DiskCoupling, ClippedAreaOfSquaresAndTriangles) {
   const std::vector<std::array<double, 2>> tri = {{0, 0}, {2, 0}, {0, 2}};

@@ -10,6 +10,7 @@
 #include "ship_lrm/rotor/momentum_theory.hpp"
 
 using namespace ship_lrm::flight;
+using ship_lrm::Vec3;
 
 namespace {
 constexpr double kDeg = 180.0 / M_PI;

@@ -6,6 +6,7 @@
 #include "ship_lrm/rotor/force_harmonics.hpp"
 
 using namespace ship_lrm::rotor;
+using ship_lrm::Vec3;
 
 TEST(ForceHarmonics, RecoversKnownCoefficients) {
   // Per-blade force F_b(psi) = a0 + a1 cos psi + b2 sin 2 psi + a4 cos 4 psi + b9 sin 9 psi; four blades

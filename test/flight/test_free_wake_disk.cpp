@@ -13,6 +13,7 @@
 #include "ship_lrm/rotor/momentum_theory.hpp"
 
 using namespace ship_lrm::rotor;
+using ship_lrm::Vec3;
 
 namespace {
 FreeWakeDiskConfig coarse(const Vec3& air_over_vh) {

@@ -8,6 +8,7 @@
 #include "ship_lrm/flight/helicopter.hpp"
 
 using namespace ship_lrm::flight;
+using ship_lrm::Vec3;
 
 namespace {
 // Period of the oscillation of x(t) from its upward zero crossings.

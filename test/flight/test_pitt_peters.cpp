@@ -8,6 +8,7 @@
 #include "ship_lrm/rotor/pitt_peters.hpp"
 
 using namespace ship_lrm::rotor;
+using ship_lrm::Vec3;
 
 namespace {
 // The thesis' inflow test case (thesis table 6.4): T = 24525 N, R = 4.92 m, rho = 1.1934 kg/m^3.

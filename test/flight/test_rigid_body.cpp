@@ -5,6 +5,7 @@
 #include "ship_lrm/flight/helicopter.hpp"
 
 using namespace ship_lrm::flight;
+using ship_lrm::Vec3;
 
 TEST(RigidBody, TorqueFreeTumblingConservesMomentumAndEnergy) {
   const auto p = load_default_bo105();

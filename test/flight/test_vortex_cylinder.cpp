@@ -13,6 +13,7 @@
 #include "ship_lrm/rotor/vortex_cylinder.hpp"
 
 using namespace ship_lrm::rotor;
+using ship_lrm::Vec3;
 
 namespace {
 constexpr double kR = 4.92, kT = 24525, kRho = 1.1934;

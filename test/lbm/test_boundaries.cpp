@@ -3,12 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numeric>
 
 #include "flow_cases.hpp"
 
 using namespace ship_lrm::lbm;
+using ship_lrm::ConfigError;
 using namespace ship_lrm::lbm::test;
 
 // 4. A plug inflow U between no-slip walls develops into the Poiseuille profile
@@ -603,5 +605,15 @@ TEST(OpenBoundaries, FacesFedFromAGridTakeALinearFieldExactly) {
   EXPECT_GT(fed, 100);
   f.to_lattice = 1.0;  // 2 - 4 lattice units: beyond the Mach limit
   EXPECT_THROW(s->feed_faces_from_grid(w, 0, w, 0, f), ConfigError);
+  EXPECT_EQ(s->boundary_values(), after);
+  // a diverged field (a NaN where the faces read it) is a divergence, named at a fed cell, not bad input
+  f.to_lattice = 0.01;
+  for (float& v : u) v = std::numeric_limits<float>::quiet_NaN();
+  try {
+    s->feed_faces_from_grid(w, 0, w, 0, f);
+    ADD_FAILURE() << "a NaN field was fed";
+  } catch (const DivergenceError& e) {
+    EXPECT_TRUE(e.x == 0 || e.x == lc.nx - 1 || e.y == 0 || e.y == lc.ny - 1 || e.z == 0 || e.z == lc.nz - 1) << e.what();
+  }
   EXPECT_EQ(s->boundary_values(), after);
 }

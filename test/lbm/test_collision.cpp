@@ -17,6 +17,7 @@
 #include "ship_lrm/lbm/solver.hpp"
 
 using namespace ship_lrm::lbm;
+using ship_lrm::ConfigError;
 
 namespace {
 

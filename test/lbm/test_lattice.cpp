@@ -10,6 +10,7 @@
 #include "ship_lrm/lbm/vtk_writer.hpp"
 
 using namespace ship_lrm::lbm;
+using ship_lrm::ConfigError;
 using namespace ship_lrm::lbm::test;
 
 // Isotropy of D3Q19 (Qian, d'Humieres & Lallemand 1992): sum w = 1, sum w c = 0,

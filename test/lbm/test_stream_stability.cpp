@@ -9,6 +9,7 @@
 #include "ship_lrm/lbm/stream_stability.hpp"
 
 using namespace ship_lrm::lbm;
+using ship_lrm::ConfigError;
 
 namespace {
 // A stream through a velocity inlet and a pressure outlet at the wake's lattice viscosity (model,

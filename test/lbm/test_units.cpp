@@ -5,6 +5,7 @@
 #include "ship_lrm/lbm/units.hpp"
 
 using namespace ship_lrm::lbm;
+using ship_lrm::ConfigError;
 
 // Thesis 6.4 / table 6.4: LRM, 4R = 4 x 4.92 m, N = 64, u_ref = 30 m/s at 0.3/sqrt(3):
 // time step 1.80352 ms.

@@ -24,8 +24,8 @@ inline rotor::RotorDiskState disk_state_at(int k, double dt) {
   s.radius = 4.92;
   s.rotor_speed = 44.4;
   s.density = 1.1934;
-  s.hub_velocity = rotor::Vec3(20.0 + 0.5 * std::sin(0.1 * k), 0.0, 0.5);
-  s.aero_force = rotor::Vec3(0, 0, -24525.0 - 2000.0 * std::sin(0.05 * k));
+  s.hub_velocity = ship_lrm::Vec3(20.0 + 0.5 * std::sin(0.1 * k), 0.0, 0.5);
+  s.aero_force = ship_lrm::Vec3(0, 0, -24525.0 - 2000.0 * std::sin(0.05 * k));
   s.harmonics.cos[0] = s.aero_force;
   return s;
 }

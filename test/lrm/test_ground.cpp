@@ -13,7 +13,7 @@
 #include "ship_lrm/lrm/inflow_sweep.hpp"
 
 using namespace ship_lrm;
-using rotor::Vec3;
+using ship_lrm::Vec3;
 
 namespace {
 using lrm::test::quick_config;
@@ -157,31 +157,31 @@ TEST(Ground, ASlipGroundMaySlideAlongItselfOnly) {
   EXPECT_TRUE(d.solver().lattice().wall_motions().empty());  // built at rest: no moving-wall slot
   m.velocity = Vec3(-20.0, 0.0, 0.5);
   ground->set_motion(m);
-  EXPECT_THROW(d.update_wall_motions(), lbm::ConfigError);
+  EXPECT_THROW(d.update_wall_motions(), ship_lrm::ConfigError);
   m.velocity = Vec3::Zero();
   m.omega = Vec3(0.0, 0.1, 0.0);
   ground->set_motion(m);
-  EXPECT_THROW(d.update_walls(), lbm::ConfigError);
+  EXPECT_THROW(d.update_walls(), ship_lrm::ConfigError);
   EXPECT_EQ(d.wall_cells(), cells);
   lrm::LrmDomain e(quick_config());
   auto kept_clear = std::make_shared<lrm::GroundPlane>(6.0);
   kept_clear->set_slip(true);
   kept_clear->set_clear_of_faces(true);  // the held air inside would not slide with it
-  EXPECT_THROW(e.add_wall(kept_clear), lbm::ConfigError);
+  EXPECT_THROW(e.add_wall(kept_clear), ship_lrm::ConfigError);
   EXPECT_EQ(e.wall_cells(), 0u);
   lrm::IsolatedRotorCase c;
   c.slip_ground = true;  // without a ground
-  EXPECT_THROW(lrm::run_isolated_rotor(quick_config(), c), lbm::ConfigError);
+  EXPECT_THROW(lrm::run_isolated_rotor(quick_config(), c), ship_lrm::ConfigError);
 }
 
 TEST(Ground, BadSetUpsAreRefusedBeforeAnyStep) {
   lrm::LrmDomain d(quick_config());
-  EXPECT_THROW(d.add_wall(std::make_shared<lrm::GroundPlane>(0.0)), lbm::ConfigError);  // through the disk
+  EXPECT_THROW(d.add_wall(std::make_shared<lrm::GroundPlane>(0.0)), ship_lrm::ConfigError);  // through the disk
   lrm::IsolatedRotorCase c;
   c.ground_height = 40.0;  // below the bottom face at a = 1.25 (12.3 m)
-  EXPECT_THROW(lrm::run_isolated_rotor(quick_config(), c), lbm::ConfigError);
-  EXPECT_THROW(lrm::check_isolated_rotor(quick_config(), c), lbm::ConfigError);  // what the sweeps ask first
-  c.ground_height = 0.01;                                                        // on the disk's cells
+  EXPECT_THROW(lrm::run_isolated_rotor(quick_config(), c), ship_lrm::ConfigError);
+  EXPECT_THROW(lrm::check_isolated_rotor(quick_config(), c), ship_lrm::ConfigError);  // what the sweeps ask first
+  c.ground_height = 0.01;                                                             // on the disk's cells
   EXPECT_THROW(lrm::check_isolated_rotor(quick_config(), c), lrm::WallOnRotorDisk);
   c.ground_height = 0.5 * 4.92;
   EXPECT_NO_THROW(lrm::check_isolated_rotor(quick_config(), c));
@@ -239,7 +239,7 @@ TEST(Ground, HoverWithEntrainingFacesStaysBelowOneWhereTheThesisFailed) {
   EXPECT_LT(ratio[2], 1.0);
   // all-pressure faces hold air at rest only: a stream is refused
   lrm::LrmDomain d(cfg);
-  EXPECT_THROW(d.set_stream(Vec3(-5.0, 0, 0)), lbm::ConfigError);
+  EXPECT_THROW(d.set_stream(Vec3(-5.0, 0, 0)), ship_lrm::ConfigError);
 }
 
 TEST(Ground, ForwardFlightAt6MetresPerSecondHasAGroundEffectThatFadesWithHeight) {

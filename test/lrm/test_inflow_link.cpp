@@ -6,7 +6,7 @@
 #include "ship_lrm/lrm/inflow_link.hpp"
 
 using namespace ship_lrm;
-using rotor::Vec3;
+using ship_lrm::Vec3;
 
 namespace {
 

@@ -35,8 +35,8 @@ TEST(CudaLrmDomain, MatchesCpuInATurningStreamWithRotorForces) {
   lrm::LrmDomain gpu(cfg);
   ASSERT_STREQ(gpu.solver().backend_name(), "cuda");
   lrm::LrmDomain::Motion m;
-  m.air_velocity = lrm::Vec3(-12.0, 2.0, 1.0);
-  m.omega = lrm::Vec3(0.02, -0.05, 0.1);
+  m.air_velocity = ship_lrm::Vec3(-12.0, 2.0, 1.0);
+  m.omega = ship_lrm::Vec3(0.02, -0.05, 0.1);
   for (lrm::LrmDomain* d : {&cpu, &gpu}) {
     d->set_motion(m);
     d->restart_flow();
@@ -46,15 +46,15 @@ TEST(CudaLrmDomain, MatchesCpuInATurningStreamWithRotorForces) {
   compare(cpu, gpu, 1, 1e-6, "stream");
   compare(cpu, gpu, 20, 1e-5, "stream");
   rotor::RotorForceHarmonics h;
-  h.cos[0] = rotor::Vec3(300.0, 0.0, -24525.0);
-  h.cos[1] = rotor::Vec3(0.0, 0.0, 1500.0);
-  h.sin[2] = rotor::Vec3(0.0, 0.0, -800.0);
+  h.cos[0] = ship_lrm::Vec3(300.0, 0.0, -24525.0);
+  h.cos[1] = ship_lrm::Vec3(0.0, 0.0, 1500.0);
+  h.sin[2] = ship_lrm::Vec3(0.0, 0.0, -800.0);
   for (lrm::LrmDomain* d : {&cpu, &gpu}) d->set_rotor_forces(h);
   compare(cpu, gpu, 1, 1e-6, "rotor forces");
   compare(cpu, gpu, 20, 1e-5, "rotor forces");
-  m.omega = lrm::Vec3(0.03, -0.04, 0.12);  // a manoeuvre: new face values and fictitious forces
-  m.omega_dot = lrm::Vec3(0.5, 0.0, -0.2);
-  m.hub_acceleration = lrm::Vec3(1.0, 0.0, 0.3);
+  m.omega = ship_lrm::Vec3(0.03, -0.04, 0.12);  // a manoeuvre: new face values and fictitious forces
+  m.omega_dot = ship_lrm::Vec3(0.5, 0.0, -0.2);
+  m.hub_acceleration = ship_lrm::Vec3(1.0, 0.0, 0.3);
   for (lrm::LrmDomain* d : {&cpu, &gpu}) d->set_motion(m);
   compare(cpu, gpu, 1, 1e-6, "manoeuvre");
   compare(cpu, gpu, 20, 1e-5, "manoeuvre");
@@ -72,7 +72,7 @@ TEST(CudaLrmDomain, LatticeOfATurningDomainMatchesCpuOnBareSolvers) {
   if (!lbm::cuda_available()) GTEST_SKIP() << "no CUDA device: run scripts/gpu_check.sh on a GPU machine";
   lrm::LrmDomain dom(lrm::test::quick_config(16));
   lrm::LrmDomain::Motion m;
-  m.omega = lrm::Vec3(0, 0, 0.1);
+  m.omega = ship_lrm::Vec3(0, 0, 0.1);
   dom.set_motion(m);
   dom.restart_flow();
   const lbm::Lattice lat = dom.solver().lattice();

@@ -17,7 +17,7 @@ namespace {
 using lrm::test::quick_config;
 
 // Largest deviation from `stream` (m/s) in any cell after 1000 steps of the stream through cfg's domain.
-double stream_deviation_after_1000_steps(const lrm::LrmConfig& cfg, const rotor::Vec3& stream) {
+double stream_deviation_after_1000_steps(const lrm::LrmConfig& cfg, const ship_lrm::Vec3& stream) {
   lrm::LrmDomain d(cfg);
   d.set_stream(stream);
   d.restart_flow();
@@ -26,7 +26,7 @@ double stream_deviation_after_1000_steps(const lrm::LrmConfig& cfg, const rotor:
   const double scale = d.units().dx() / d.units().dt();
   double worst = 0;
   for (size_t c = 0; c < f.rho.size(); ++c) {
-    const rotor::Vec3 u(f.u[3 * c] * scale, f.u[3 * c + 1] * scale, f.u[3 * c + 2] * scale);
+    const ship_lrm::Vec3 u(f.u[3 * c] * scale, f.u[3 * c + 1] * scale, f.u[3 * c + 2] * scale);
     worst = std::max(worst, (u - stream).norm());
   }
   return worst;
@@ -39,7 +39,7 @@ TEST_P(UniformStream, StaysUniformThroughTheOpenFaces) {
   // uniform-stream bound (translating domain, body-frame formulation: the motion is the stream at
   // the faces): to 0.5 % of the stream speed after 1000 steps, in every fluid cell.
   const auto s = GetParam();
-  const rotor::Vec3 stream(s[0], s[1], s[2]);
+  const ship_lrm::Vec3 stream(s[0], s[1], s[2]);
   const double worst = stream_deviation_after_1000_steps(quick_config(), stream);
   EXPECT_LT(worst, 0.005 * stream.norm()) << "largest deviation " << worst << " m/s";
 }
@@ -50,7 +50,7 @@ TEST_P(UniformStream, StaysUniformThroughCharacteristicInlets) {
   // Zou-He density of the mixed population sums instead of the edge's own density: 28 % of a 15 m/s
   // stream in the edge cells (2026-12-04).
   const auto s = GetParam();
-  const rotor::Vec3 stream(s[0], s[1], s[2]);
+  const ship_lrm::Vec3 stream(s[0], s[1], s[2]);
   lrm::LrmConfig cfg = quick_config();
   cfg.characteristic_inlets = true;
   const double worst = stream_deviation_after_1000_steps(cfg, stream);
@@ -67,7 +67,7 @@ TEST(LrmDomain, PressureOutletFacesKeepAUniformStreamUniform) {
   auto c = quick_config();
   for (int f : {0, 4, 5}) c.faces[f] = lbm::FaceType::PressureOutlet;  // back, top, bottom
   lrm::LrmDomain d(c);
-  const rotor::Vec3 stream(-20, 4, 0);
+  const ship_lrm::Vec3 stream(-20, 4, 0);
   d.set_stream(stream);
   d.restart_flow();
   d.step(500);
@@ -75,7 +75,7 @@ TEST(LrmDomain, PressureOutletFacesKeepAUniformStreamUniform) {
   const double scale = d.units().dx() / d.units().dt();
   double worst = 0, worst_density = 0;
   for (size_t k = 0; k < f.rho.size(); ++k) {
-    const rotor::Vec3 u(f.u[3 * k] * scale, f.u[3 * k + 1] * scale, f.u[3 * k + 2] * scale);
+    const ship_lrm::Vec3 u(f.u[3 * k] * scale, f.u[3 * k + 1] * scale, f.u[3 * k + 2] * scale);
     worst = std::max(worst, (u - stream).norm());
     worst_density = std::max(worst_density, std::abs(f.rho[k] - 1.0));
   }
@@ -90,17 +90,17 @@ TEST(LrmDomain, PressureOutletFacesKeepAUniformStreamUniform) {
 // after 4 s; the relaxed outlets, LrmConfig::outlet_sigma = 1, still 1.5 m/s after 4 s).
 TEST(LrmDomain, TheThesisOutletsTakeOnANewStreamThatEntersThroughThem) {
   lrm::LrmDomain d(quick_config());
-  d.set_stream(rotor::Vec3(-20, 0, 0));
+  d.set_stream(ship_lrm::Vec3(-20, 0, 0));
   d.restart_flow();
   d.step(200);
-  const rotor::Vec3 stream(-8, 0, 3);  // slower, with 3 m/s of downwash: in through the top face
+  const ship_lrm::Vec3 stream(-8, 0, 3);  // slower, with 3 m/s of downwash: in through the top face
   d.set_stream(stream);
   d.step(static_cast<long>(std::lround(4.0 / d.time_step())));  // 2 s: 0.47 m/s RMS left
   const lbm::Fields f = d.solver().fields();
   const double scale = d.units().dx() / d.units().dt();
   double square = 0;
   for (size_t k = 0; k < f.rho.size(); ++k) {
-    const rotor::Vec3 u(f.u[3 * k] * scale, f.u[3 * k + 1] * scale, f.u[3 * k + 2] * scale);
+    const ship_lrm::Vec3 u(f.u[3 * k] * scale, f.u[3 * k + 1] * scale, f.u[3 * k + 2] * scale);
     square += (u - stream).squaredNorm();
   }
   EXPECT_LT(std::sqrt(square / f.rho.size()), 0.005 * stream.norm());
@@ -109,7 +109,7 @@ TEST(LrmDomain, TheThesisOutletsTakeOnANewStreamThatEntersThroughThem) {
 // A face grid holding a field linear in space (trilinear interpolation is exact for it):
 // u = (-10 + 0.2 z, 0.1 x, 1), m/s, on 2 m spacing around the hub.
 struct LinearFaceGrid {
-  static rotor::Vec3 air(const rotor::Vec3& p) { return rotor::Vec3(-10 + 0.2 * p.z(), 0.1 * p.x(), 1.0); }
+  static ship_lrm::Vec3 air(const ship_lrm::Vec3& p) { return ship_lrm::Vec3(-10 + 0.2 * p.z(), 0.1 * p.x(), 1.0); }
   lbm::GridFeed feed;
   std::vector<float> u;
   lbm::GridWindowView windows[2];
@@ -125,14 +125,14 @@ struct LinearFaceGrid {
     for (int k = 0; k < n; ++k)
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-          const rotor::Vec3 a = air(rotor::Vec3(-30 + 2.0 * i, -30 + 2.0 * j, -30 + 2.0 * k));
+          const ship_lrm::Vec3 a = air(ship_lrm::Vec3(-30 + 2.0 * i, -30 + 2.0 * j, -30 + 2.0 * k));
           for (int d = 0; d < 3; ++d) u.push_back(static_cast<float>(a[d]));
         }
     windows[0].u = windows[1].u = u.data();
   }
   void feed_to(lrm::LrmDomain& d) const {
     const std::uint64_t serials[2] = {0, 0};
-    d.set_face_grid(windows, serials, feed, rotor::Vec3::Zero(), Eigen::Matrix3d::Identity(), rotor::Vec3::Zero());
+    d.set_face_grid(windows, serials, feed, ship_lrm::Vec3::Zero(), Eigen::Matrix3d::Identity(), ship_lrm::Vec3::Zero());
   }
 };
 
@@ -142,7 +142,7 @@ struct LinearFaceGrid {
 // start's disturbance: docs/benchmarks.md at 193c1b4, "The approach's outlets").
 TEST(LrmDomain, RestartingWithAFaceGridStartsEveryCellWithTheGridsAir) {
   lrm::LrmDomain d(quick_config());
-  d.set_stream(rotor::Vec3(-20, 0, 0));
+  d.set_stream(ship_lrm::Vec3(-20, 0, 0));
   const LinearFaceGrid grid;
   grid.feed_to(d);
   d.restart_flow();
@@ -150,8 +150,8 @@ TEST(LrmDomain, RestartingWithAFaceGridStartsEveryCellWithTheGridsAir) {
   const double scale = d.units().dx() / d.units().dt();
   double worst = 0, worst_undisturbed = 0;
   for (size_t k = 0; k < f.rho.size(); ++k) {
-    const rotor::Vec3 r = d.position(k);
-    const rotor::Vec3 u(f.u[3 * k] * scale, f.u[3 * k + 1] * scale, f.u[3 * k + 2] * scale);
+    const ship_lrm::Vec3 r = d.position(k);
+    const ship_lrm::Vec3 u(f.u[3 * k] * scale, f.u[3 * k + 1] * scale, f.u[3 * k + 2] * scale);
     worst = std::max(worst, (u - LinearFaceGrid::air(r)).norm());
     worst_undisturbed = std::max(worst_undisturbed, (d.undisturbed_air(r) - LinearFaceGrid::air(r)).norm());
   }
@@ -164,13 +164,13 @@ TEST(LrmDomain, RestartingWithAFaceGridStartsEveryCellWithTheGridsAir) {
 TEST(SliceAverage, AveragesEachPointOverTheSamplesInWhichItWasFluid) {
   lrm::SliceAverage avg;
   lrm::DomainSlice s;
-  s.position = {rotor::Vec3(0, 0, 0), rotor::Vec3(1, 0, 0)};
-  s.velocity = {rotor::Vec3(1, 0, 0), rotor::Vec3(2, 0, 0)};
-  s.undisturbed = {rotor::Vec3(-1, 0, 0), rotor::Vec3(-2, 0, 0)};
+  s.position = {ship_lrm::Vec3(0, 0, 0), ship_lrm::Vec3(1, 0, 0)};
+  s.velocity = {ship_lrm::Vec3(1, 0, 0), ship_lrm::Vec3(2, 0, 0)};
+  s.undisturbed = {ship_lrm::Vec3(-1, 0, 0), ship_lrm::Vec3(-2, 0, 0)};
   s.wall = {0, 0};
   avg.add(s);
-  s.velocity = {rotor::Vec3(3, 0, 0), rotor::Vec3(0, 0, 0)};
-  s.undisturbed = {rotor::Vec3(-3, 0, 0), rotor::Vec3(-9, 0, 0)};
+  s.velocity = {ship_lrm::Vec3(3, 0, 0), ship_lrm::Vec3(0, 0, 0)};
+  s.undisturbed = {ship_lrm::Vec3(-3, 0, 0), ship_lrm::Vec3(-9, 0, 0)};
   s.wall = {0, 1};  // the second point is in the wall now
   s.max_mach = 0.2;
   avg.add(s);
@@ -186,24 +186,24 @@ TEST(SliceAverage, AveragesEachPointOverTheSamplesInWhichItWasFluid) {
   EXPECT_EQ(m.wall[1], 1);  // a wall in 2 of 3 samples
   EXPECT_DOUBLE_EQ(m.max_mach, 0.2);
   lrm::DomainSlice other = s;
-  other.position[1] = rotor::Vec3(2, 0, 0);
+  other.position[1] = ship_lrm::Vec3(2, 0, 0);
   EXPECT_THROW(avg.add(other), std::invalid_argument);
 }
 
 TEST(LrmDomain, BadInputIsRejectedBeforeAnyStep) {
   auto c = quick_config();
   c.reach = 0.9;
-  EXPECT_THROW(lrm::LrmDomain{c}, lbm::ConfigError);
+  EXPECT_THROW(lrm::LrmDomain{c}, ship_lrm::ConfigError);
   c = quick_config();
   c.nodes = 8;
-  EXPECT_THROW(lrm::LrmDomain{c}, lbm::ConfigError);
+  EXPECT_THROW(lrm::LrmDomain{c}, ship_lrm::ConfigError);
   c = quick_config();
   c.outlet_sigma[0] = -1.0;
-  EXPECT_THROW(lrm::LrmDomain{c}, lbm::ConfigError);
+  EXPECT_THROW(lrm::LrmDomain{c}, ship_lrm::ConfigError);
   c.outlet_sigma[0] = std::nan("");
-  EXPECT_THROW(lrm::LrmDomain{c}, lbm::ConfigError);
+  EXPECT_THROW(lrm::LrmDomain{c}, ship_lrm::ConfigError);
   lrm::LrmDomain d(quick_config());
-  EXPECT_THROW(d.set_stream(rotor::Vec3(-200, 0, 0)), lbm::ConfigError);  // beyond the lattice Mach limit
+  EXPECT_THROW(d.set_stream(ship_lrm::Vec3(-200, 0, 0)), ship_lrm::ConfigError);  // beyond the lattice Mach limit
 }
 
 #include "ship_lrm/lrm/inflow_sweep.hpp"
@@ -290,17 +290,17 @@ TEST(IsolatedRotor, TheRotorsFarFieldIsRescaledWhileTheWakeKeepsItsDirection) {
   cfg.rotor_far_field = true;
   const auto forces = [](double thrust) {
     rotor::RotorForceHarmonics h;
-    h.cos[0] = rotor::Vec3(0, 0, -thrust);
+    h.cos[0] = ship_lrm::Vec3(0, 0, -thrust);
     return h;
   };
-  const rotor::Vec3 air(-20, 0, 0);
+  const ship_lrm::Vec3 air(-20, 0, 0);
   const double T = 24525;
   lrm::LrmDomain d(cfg);
   EXPECT_TRUE(d.far_field().empty());
   d.set_stream(air);
   d.set_rotor_forces(forces(T));
   ASSERT_EQ(d.far_field_builds(), 1u);
-  const std::vector<rotor::Vec3> first = d.far_field();
+  const std::vector<ship_lrm::Vec3> first = d.far_field();
   // +2.5 %: v from 6.43 to 6.58 m/s, the wake turns by 0.38 deg; rescaled by the ratio of the v's
   d.set_rotor_forces(forces(1.025 * T));
   EXPECT_EQ(d.far_field_builds(), 1u);
@@ -333,20 +333,20 @@ TEST(IsolatedRotor, WithAFaceGridTheFarFieldIsThatOfTheGridsAirAtTheHub) {
   auto cfg = quick_config();
   cfg.rotor_far_field = true;
   rotor::RotorForceHarmonics h;
-  h.cos[0] = rotor::Vec3(0, 0, -24525);
+  h.cos[0] = ship_lrm::Vec3(0, 0, -24525);
   lrm::LrmDomain d(cfg);
-  d.set_stream(rotor::Vec3(-20, 0, 0));
+  d.set_stream(ship_lrm::Vec3(-20, 0, 0));
   lbm::GridFeed grid;
   grid.free_stream[0] = -12.0f;
   const lbm::GridWindowView windows[2];
   const std::uint64_t serials[2] = {0, 0};
-  d.set_face_grid(windows, serials, grid, rotor::Vec3::Zero(), Eigen::Matrix3d::Identity(), rotor::Vec3::Zero());
+  d.set_face_grid(windows, serials, grid, ship_lrm::Vec3::Zero(), Eigen::Matrix3d::Identity(), ship_lrm::Vec3::Zero());
   d.set_rotor_forces(h);
   lrm::LrmDomain still(cfg);
-  still.set_stream(rotor::Vec3(-12, 0, 0));
+  still.set_stream(ship_lrm::Vec3(-12, 0, 0));
   still.set_rotor_forces(h);
   lrm::LrmDomain undisturbed(cfg);
-  undisturbed.set_stream(rotor::Vec3(-20, 0, 0));
+  undisturbed.set_stream(ship_lrm::Vec3(-20, 0, 0));
   undisturbed.set_rotor_forces(h);
   ASSERT_EQ(d.far_field().size(), still.far_field().size());
   double to_still = 0, to_undisturbed = 0;
@@ -389,12 +389,12 @@ TEST(IsolatedRotor, AClimbRateMustBeFiniteNonNegativeAndAwayFromTheGround) {
   c.settle = 0.01;
   c.average = 0.01;
   c.climb = -1;
-  EXPECT_THROW(lrm::run_isolated_rotor(cfg, c), lbm::ConfigError);
+  EXPECT_THROW(lrm::run_isolated_rotor(cfg, c), ship_lrm::ConfigError);
   c.climb = std::nan("");
-  EXPECT_THROW(lrm::run_isolated_rotor(cfg, c), lbm::ConfigError);
+  EXPECT_THROW(lrm::run_isolated_rotor(cfg, c), ship_lrm::ConfigError);
   c.climb = 5;
   c.ground_height = 4.92;
-  EXPECT_THROW(lrm::run_isolated_rotor(cfg, c), lbm::ConfigError);
+  EXPECT_THROW(lrm::run_isolated_rotor(cfg, c), ship_lrm::ConfigError);
 }
 
 #include "ship_lrm/flight/trim.hpp"
@@ -415,7 +415,7 @@ TEST(CoupledLrm, TrimAt30MetresPerSecondConvergesNearPittPetersPower) {
   flight::Helicopter heli(p, std::make_unique<lrm::LrmInflow>(c, 3.0));
   flight::TrimOptions o;
   o.initial_controls = ref.controls;
-  o.initial_attitude = flight::Vec3(ref.roll, ref.pitch, 0);
+  o.initial_attitude = ship_lrm::Vec3(ref.roll, ref.pitch, 0);
   const auto r = flight::trim(heli, t, o);
   ASSERT_TRUE(r.converged) << r.message;
   EXPECT_NEAR(r.total_power, ref.total_power, 0.10 * ref.total_power);

@@ -11,7 +11,7 @@
 #include "ship_lrm/lrm/domain.hpp"
 
 using namespace ship_lrm;
-using rotor::Vec3;
+using ship_lrm::Vec3;
 
 namespace {
 

@@ -12,7 +12,7 @@
 #include "ship_lrm/lrm/realtime_inflow.hpp"
 
 using namespace ship_lrm;
-using rotor::Vec3;
+using ship_lrm::Vec3;
 
 namespace {
 
@@ -140,7 +140,7 @@ TEST(RealTimeInflow, PipelinedLateJobsAreDroppedAndPittPetersServesUntilOneIsOnT
   check_late_jobs_fall_back(lrm::RealTimeMode::Pipelined, 0.0036);
 }
 
-TEST(RealTimeInflow, BadBudgetIsRefused) { EXPECT_THROW(lrm::make_realtime_lrm(tiny_config(), 0.2, 0.0), lbm::ConfigError); }
+TEST(RealTimeInflow, BadBudgetIsRefused) { EXPECT_THROW(lrm::make_realtime_lrm(tiny_config(), 0.2, 0.0), ship_lrm::ConfigError); }
 
 // The watch of a paced run: windows of simulated time in which most steps flew on Pitt-Peters are
 // reported with their counts, others are not (1.8 ms steps, 5 s windows: about 2 778 steps per window).

@@ -9,7 +9,6 @@
 
 using namespace ship_lrm;
 using Eigen::Vector3d;
-using Mat3 = Eigen::Matrix3d;
 
 namespace {
 // The domain's pose at time t: hub moving at v, axes turning at omega (mr axes) from R0.

@@ -53,7 +53,7 @@ TEST(ApproachPath, ThesisNumbers) {
   EXPECT_DOUBLE_EQ(p.speed_at(30), 0.0);
   lrm::ApproachPath bad;
   bad.hover_at = 10;  // before the deceleration starts
-  EXPECT_THROW(bad.validate(), lbm::ConfigError);
+  EXPECT_THROW(bad.validate(), ship_lrm::ConfigError);
 }
 
 // Pitt-Peters in the free stream: the helicopter held at the trim attitude, moving at 5 m/s into a
@@ -199,7 +199,7 @@ TEST(ShipApproach, TablesThatCannotServeAnApproachAreRefusedByName) {
   try {
     lrm::ShipApproach a(c, flight::load_default_bo105());
     FAIL() << "a 5 s approach on a 2 s table was accepted";
-  } catch (const lbm::ConfigError& e) {
+  } catch (const ship_lrm::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("covers"), std::string::npos) << e.what();
   }
   // a table of no known ship, and one of a model-scale ship
@@ -225,7 +225,7 @@ TEST(ShipApproach, TablesThatCannotServeAnApproachAreRefusedByName) {
     try {
       lrm::ShipApproach a(k, flight::load_default_bo105());
       FAIL() << "a table of ship 'none' (" << scale << ") was accepted";
-    } catch (const lbm::ConfigError& e) {
+    } catch (const ship_lrm::ConfigError& e) {
       EXPECT_NE(std::string(e.what()).find(scale == "full" ? "cannot rebuild the ship" : "full-scale"), std::string::npos) << e.what();
     }
   }

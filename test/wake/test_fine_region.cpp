@@ -13,7 +13,7 @@
 #include "ship_lrm/wake/wake_domain.hpp"
 
 using namespace ship_lrm::wake;
-using ship_lrm::lbm::ConfigError;
+using ship_lrm::ConfigError;
 
 namespace {
 

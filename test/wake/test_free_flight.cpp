@@ -14,7 +14,6 @@
 #include "tiny_approach.hpp"
 
 using namespace ship_lrm;
-using Vec3 = Eigen::Vector3d;
 
 namespace {
 
@@ -186,7 +185,7 @@ TEST(FreeFlight, EndsWhereTheSkidsTouchTheShipOrTheSea) {
   try {
     lrm::ShipApproach a(inside, params);
     FAIL() << "a start with the skids in the deck was accepted";
-  } catch (const lbm::ConfigError& e) {
+  } catch (const ship_lrm::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("landing gear"), std::string::npos) << e.what();
   }
 }

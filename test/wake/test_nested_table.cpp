@@ -354,7 +354,7 @@ TEST(NestedTable, ANestedRunResumesAndRefusesProbesOutsideTheFluid) {
   PrecomputeOptions bad = small_nested_run("nested_bad_probe.h5");
   fs::remove(bad.out);
   bad.probes = {{-0.3, 0.0, 0.05}};  // 0.05 m below the deck: in the hull
-  EXPECT_THROW(precompute_wake(bad), ship_lrm::lbm::ConfigError);
+  EXPECT_THROW(precompute_wake(bad), ship_lrm::ConfigError);
   EXPECT_FALSE(fs::exists(bad.out));
 }
 
@@ -406,9 +406,9 @@ TEST(NestedTable, AStoredPartServesTheRegionsValuesAndIsSmaller) {
   PrecomputeOptions outside = small_nested_run("nested_part_outside.h5");
   fs::remove(outside.out);
   outside.domain.fine.stored_fore = 0.2;  // past the box's fore face
-  EXPECT_THROW(precompute_wake(outside), ship_lrm::lbm::ConfigError);
+  EXPECT_THROW(precompute_wake(outside), ship_lrm::ConfigError);
   outside.domain.fine.stored_fore = std::numeric_limits<double>::quiet_NaN();
   outside.domain.fine.stored_aft = 0.05;  // 0.05 .. 0.1: fewer than 4 coarse cells
-  EXPECT_THROW(precompute_wake(outside), ship_lrm::lbm::ConfigError);
+  EXPECT_THROW(precompute_wake(outside), ship_lrm::ConfigError);
   EXPECT_FALSE(fs::exists(outside.out));
 }

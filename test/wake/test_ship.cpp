@@ -11,6 +11,7 @@
 #include "temp_path.hpp"
 
 using namespace ship_lrm::wake;
+using ship_lrm::Vec3;
 namespace fs = std::filesystem;
 
 namespace {

@@ -178,7 +178,7 @@ TEST(WakeFaceFeed, FaceBeyondTheMachLimitIsRefused) {
   const std::vector<float> before = d.solver().boundary_values();
   lrm::WakeFaceFeed feed(std::make_shared<wake::WakeTable>(table.path));
   lrm::WakeFaceFeed::Pose pose;
-  EXPECT_THROW(feed.apply(d, 0.0, pose, true), lbm::ConfigError);
+  EXPECT_THROW(feed.apply(d, 0.0, pose, true), ship_lrm::ConfigError);
   EXPECT_EQ(d.solver().boundary_values(), before);
   EXPECT_FALSE(d.has_face_grid());
 }

@@ -74,10 +74,10 @@ TEST(WakePrecompute, BadInputIsRefusedBeforeAnyStep) {
   o.out = temp("bad.h5");
   PrecomputeOptions a = o;
   a.domain.cells_per_length = 4;
-  EXPECT_THROW(precompute_wake(a), ship_lrm::lbm::ConfigError);
+  EXPECT_THROW(precompute_wake(a), ship_lrm::ConfigError);
   a = o;
   a.domain.lattice_wind = 0.5;  // beyond the lattice Mach limit
-  EXPECT_THROW(precompute_wake(a), ship_lrm::lbm::ConfigError);
+  EXPECT_THROW(precompute_wake(a), ship_lrm::ConfigError);
   a = o;
   a.ship = "/nonexistent/ship.stl";
   EXPECT_THROW(precompute_wake(a), GeometryError);
@@ -88,7 +88,7 @@ TEST(WakePrecompute, BadInputIsRefusedBeforeAnyStep) {
   a.domain.domain_width = 0.08;  // narrower than the ship
   EXPECT_THROW(precompute_wake(a), GeometryError);
   EXPECT_FALSE(fs::exists(o.out));
-  EXPECT_THROW(preset("huge"), ship_lrm::lbm::ConfigError);
+  EXPECT_THROW(preset("huge"), ship_lrm::ConfigError);
 }
 
 // Separation, quick variant: the 1/50 model at rest in a 9.77 m/s wind; behind the hangar door the

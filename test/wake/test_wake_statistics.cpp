@@ -17,7 +17,7 @@
 #include "temp_path.hpp"
 
 using namespace ship_lrm::wake;
-using ship_lrm::lbm::ConfigError;
+using ship_lrm::ConfigError;
 namespace fs = std::filesystem;
 
 namespace {

@@ -9,9 +9,9 @@
 #include <Eigen/Geometry>
 #include <functional>
 
-namespace ship_lrm::flight {
+#include "ship_lrm/common/vec.hpp"
 
-using Vec3 = Eigen::Vector3d;
+namespace ship_lrm::flight {
 
 struct RigidBodyState {
   Vec3 position = Vec3::Zero();                                  // m, NED

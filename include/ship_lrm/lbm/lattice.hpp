@@ -5,21 +5,15 @@
 
 #include <array>
 #include <cstdint>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "ship_lrm/common/config_error.hpp"
 #include "ship_lrm/lbm/cell_ops.hpp"
 #include "ship_lrm/lbm/cell_types.hpp"
 
 namespace ship_lrm::lbm {
-
-// Any invalid set-up: sizes, relaxation, boundary combinations, Mach limit, missing device.
-class ConfigError : public std::invalid_argument {
- public:
-  using std::invalid_argument::invalid_argument;
-};
 
 struct FaceCondition {
   FaceType type = FaceType::Wall;

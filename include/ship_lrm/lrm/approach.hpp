@@ -45,7 +45,7 @@ class ShipApproach {
  public:
   // Opens the table, rebuilds its ship and motion (from the table's attributes), trims the helicopter
   // with Pitt-Peters. With LRM inflow the fluid side (approach_fluid.hpp) answers through `link`; no
-  // link: an ApproachFluid in this process (the batch path). lbm::ConfigError or wake::TableError for
+  // link: an ApproachFluid in this process (the batch path). ConfigError or wake::TableError for
   // bad input: a table too short for the duration, a ship the table cannot name, a bad path, ...
   // realtime: for runs paced to the wall clock, the LRM side runs in its own thread with firm
   // deadlines (RealTimeInflow around the link; a late inflow is replaced by Pitt-Peters for that

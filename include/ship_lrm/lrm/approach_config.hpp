@@ -28,7 +28,7 @@ struct ApproachPath {
   double hover_at = 18.0;        // s
   double speed_at(double t) const;
   double distance_at(double t) const;  // m behind the landing spot (negative: ahead of it)
-  void validate() const;               // lbm::ConfigError naming the bad value
+  void validate() const;               // ConfigError naming the bad value
 };
 
 struct ApproachConfig {
@@ -56,8 +56,8 @@ struct ApproachConfig {
   bool free_flight = false;
 };
 
-// Checks the configuration (lbm::ConfigError naming the bad value) and opens its table: full scale,
-// long enough for table_offset + duration (lbm::ConfigError / wake::TableError otherwise).
+// Checks the configuration (ConfigError naming the bad value) and opens its table: full scale,
+// long enough for table_offset + duration (ConfigError / wake::TableError otherwise).
 void validate(const ApproachConfig& cfg);
 std::shared_ptr<wake::WakeTable> open_approach_table(const ApproachConfig& cfg);
 // The same checks for a table opened otherwise (served by another process): full scale, long enough.

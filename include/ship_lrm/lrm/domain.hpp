@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 
+#include "ship_lrm/common/vec.hpp"
 #include "ship_lrm/lbm/solver.hpp"
 #include "ship_lrm/lbm/units.hpp"
 #include "ship_lrm/lrm/walls.hpp"
@@ -32,18 +33,15 @@ namespace ship_lrm::lrm {
 // A wall (wall() names it: "ground", "ship", ...) has reached cells of the rotor disk, where the LRM
 // cannot place it (the disk's forces act on fluid cells). At the start that is bad input; in free
 // flight it is a rotor strike, which ends the flight (ShipApproach).
-class WallOnRotorDisk : public lbm::ConfigError {
+class WallOnRotorDisk : public ConfigError {
  public:
   explicit WallOnRotorDisk(const std::string& wall)
-      : lbm::ConfigError("LRM: the " + wall + " covers part of the rotor disk; move the rotor clear of it"), wall_(wall) {}
+      : ConfigError("LRM: the " + wall + " covers part of the rotor disk; move the rotor clear of it"), wall_(wall) {}
   const std::string& wall() const { return wall_; }
 
  private:
   std::string wall_;
 };
-
-using rotor::Vec3;
-using Mat3 = Eigen::Matrix3d;
 
 struct LrmConfig {
   int nodes = 64;                                            // N: lattice nodes across 4R (thesis 6.4)
@@ -88,12 +86,12 @@ struct LrmConfig {
 // cfg.reference_velocity (thesis: 30 m/s), so the lattice Mach number stays 0.3; the time step shrinks.
 LrmConfig config_for_stream(LrmConfig cfg, double fastest_stream);
 
-// The lattice units of cfg's domain (dx, dt, ...) without building it; lbm::ConfigError as LrmDomain.
+// The lattice units of cfg's domain (dx, dt, ...) without building it; ConfigError as LrmDomain.
 lbm::UnitConverter lattice_units(const LrmConfig& cfg);
 
 class LrmDomain {
  public:
-  // Throws lbm::ConfigError for a < 1, N < 16 or a set-up beyond the Mach limit.
+  // Throws ConfigError for a < 1, N < 16 or a set-up beyond the Mach limit.
   explicit LrmDomain(const LrmConfig& cfg);
 
   const LrmConfig& config() const { return cfg_; }
@@ -118,7 +116,7 @@ class LrmDomain {
     Vec3 hub_acceleration = Vec3::Zero();  // inertial acceleration of the hub, mr axes, m/s^2
   };
   // The velocity faces get air_velocity - omega x r (r from the hub), every cell the fictitious
-  // forces. Throws lbm::ConfigError when a face velocity exceeds the lattice Mach limit.
+  // forces. Throws ConfigError when a face velocity exceeds the lattice Mach limit.
   void set_motion(const Motion& m);
   // A domain translating at constant velocity: set_motion with air_velocity only.
   void set_stream(const Vec3& air_velocity);
@@ -165,7 +163,7 @@ class LrmDomain {
   // CUDA backend, or a wall that crossed a face) a new solver starts from the flow at equilibrium
   // with each cell's density and velocity. Either way, cells that left a body are refilled with the
   // mean state of their fluid neighbours, the usual refill of moving-boundary LBM (e.g. Lallemand &
-  // Luo 2003, J. Comput. Phys. 184, 406). Throws lbm::ConfigError when a body covers a rotor-disk
+  // Luo 2003, J. Comput. Phys. 184, 406). Throws ConfigError when a body covers a rotor-disk
   // cell; the domain then stays as it was.
   void add_wall(std::shared_ptr<WallSurface> wall);
   void update_walls();
@@ -188,7 +186,7 @@ class LrmDomain {
   // the bounce-back wall lies, half-way between the last fluid and the first wall cell): the far field
   // gets the ground's mirror image (rotor::VortexCylinderWake::set_ground), so that the faces let the
   // air that the ground turns outwards leave instead of holding it in. infinity: no ground (the
-  // default). Takes effect at the next set_rotor_forces. Throws lbm::ConfigError for a plane that does
+  // default). Takes effect at the next set_rotor_forces. Throws ConfigError for a plane that does
   // not lie below the disk.
   void set_far_field_ground(double height);
   // Aerodynamic force on the blades over azimuth (N, mr axes); the fluid gets the opposite.

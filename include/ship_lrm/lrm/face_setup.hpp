@@ -14,10 +14,10 @@ const std::vector<std::string>& face_setup_names();
 // The faces in LrmConfig::faces' order: back, front, left, right, top, bottom.
 const std::vector<std::string>& face_names();
 
-// Sets cfg.faces and cfg.entraining_pressure_faces to the named set-up; lbm::ConfigError naming the
+// Sets cfg.faces and cfg.entraining_pressure_faces to the named set-up; ConfigError naming the
 // choices for an unknown name.
 void apply_face_setup(const std::string& name, LrmConfig& cfg);
-// cfg.outlet_sigma = sigma on the named faces (face_names()); lbm::ConfigError for an unknown face or a
+// cfg.outlet_sigma = sigma on the named faces (face_names()); ConfigError for an unknown face or a
 // sigma outside [0, 10].
 void relax_faces(const std::vector<std::string>& faces, double sigma, LrmConfig& cfg);
 

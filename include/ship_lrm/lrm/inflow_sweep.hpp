@@ -66,7 +66,7 @@ struct IsolatedRotorResult {
 };
 
 IsolatedRotorResult run_isolated_rotor(const LrmConfig& cfg, const IsolatedRotorCase& c);
-// Builds the case's domain, stream and walls without stepping it: lbm::ConfigError (WallOnRotorDisk
+// Builds the case's domain, stream and walls without stepping it: ConfigError (WallOnRotorDisk
 // for a ground on the disk's cells) for every set-up run_isolated_rotor would refuse, so that a
 // sweep can refuse a bad case before its first long run.
 void check_isolated_rotor(const LrmConfig& cfg, const IsolatedRotorCase& c);

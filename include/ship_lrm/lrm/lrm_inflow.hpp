@@ -71,7 +71,7 @@ class LrmInflow final : public rotor::InflowModel {
   // previous coupling step's kinematics, for the accelerations
   bool have_previous_ = false;
   double previous_time_ = 0;
-  rotor::Vec3 previous_velocity_ = rotor::Vec3::Zero(), previous_rate_ = rotor::Vec3::Zero();
+  Vec3 previous_velocity_ = Vec3::Zero(), previous_rate_ = Vec3::Zero();
 };
 
 }  // namespace ship_lrm::lrm

@@ -8,14 +8,13 @@
 #include <limits>
 #include <memory>
 
+#include "ship_lrm/common/vec.hpp"
 #include "ship_lrm/lrm/domain.hpp"
 #include "ship_lrm/lrm/walls.hpp"
 #include "ship_lrm/wake/ship_geometry.hpp"
 #include "ship_lrm/wake/ship_motion.hpp"
 
 namespace ship_lrm::lrm {
-
-using Mat3 = Eigen::Matrix3d;
 
 // Where the LRM domain is in the ship's mean frame (the wake table's frame, ship_motion.hpp) at one
 // instant.
@@ -56,7 +55,7 @@ class ShipInDomain {
   // Places ship and sea for ship time t and the domain's pose. Re-voxelises the domain (adding the walls
   // at the first call) when the ship or the sea has moved relative to the grid by a quarter cell at
   // any corner of the domain since the last voxelisation; otherwise only their velocities change.
-  // Returns whether it re-voxelised. Throws lbm::ConfigError when the ship covers a rotor-disk cell.
+  // Returns whether it re-voxelised. Throws ConfigError when the ship covers a rotor-disk cell.
   bool apply(LrmDomain& domain, double t, const DomainPose& pose);
   std::size_t voxelisations() const { return voxelisations_; }
   // With LrmConfig::rotor_far_field: the height below the hub of the surface (deck or sea) that the far

@@ -6,11 +6,9 @@
 
 #include <string>
 
-#include "ship_lrm/rotor/inflow_model.hpp"
+#include "ship_lrm/common/vec.hpp"
 
 namespace ship_lrm::lrm {
-
-using rotor::Vec3;
 
 // Rigid-body velocity field of a solid relative to the domain: u(r) = velocity + omega x r, with r
 // from the hub (mr axes, m/s, rad/s).

@@ -13,12 +13,10 @@
 
 #include "ship_lrm/RotorForces.h"
 #include "ship_lrm/RotorInflow.h"
+#include "ship_lrm/common/vec.hpp"
 #include "ship_lrm/lrm/inflow_link.hpp"
 
 namespace ship_lrm::ros_layer {
-
-using Vec3 = Eigen::Vector3d;
-using Mat3 = Eigen::Matrix3d;
 
 geometry_msgs::Vector3 to_msg(const Vec3& v);
 Vec3 from_msg(const geometry_msgs::Vector3& v);

@@ -11,14 +11,12 @@
 //  * Forces are the aerodynamic forces ON the rotor blades (thrust is -z); moments about the hub.
 #pragma once
 
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 #include <array>
 #include <string>
 
-namespace ship_lrm::rotor {
+#include "ship_lrm/common/vec.hpp"
 
-using Vec3 = Eigen::Vector3d;
+namespace ship_lrm::rotor {
 
 constexpr int kHarmonicOrder = 9;    // N_harm of thesis 6.5 (k = 0..9)
 constexpr int kAzimuthSamples = 72;  // N_psi of thesis 6.5

@@ -47,7 +47,7 @@ class FineRegion {
  public:
   // coarse: the wake domain's nodes (its dx and node positions); wake: its configuration (wind,
   // lattice wind, viscosity, Smagorinsky, collision, backend, sea), cfg.cells_per_length the coarse N.
-  // Throws lbm::ConfigError for a bad ratio or box, GeometryError for a box that leaves the coarse
+  // Throws ConfigError for a bad ratio or box, GeometryError for a box that leaves the coarse
   // domain (two coarse cells from its faces) or whose faces cut the ship (only a static ship may cross
   // the fore face; every other face keeps two coarse cells clear of it at all times).
   FineRegion(const FineRegionConfig& cfg, const WakeConfig& wake, const NodeGrid& coarse, std::shared_ptr<const ShipGeometry> ship,

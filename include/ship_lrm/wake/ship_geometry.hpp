@@ -13,10 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "ship_lrm/rotor/inflow_model.hpp"
+#include "ship_lrm/common/vec.hpp"
 
 namespace ship_lrm::wake {
-using rotor::Vec3;
 
 // Unreadable or invalid geometry: a malformed or open STL, bad dimensions.
 class GeometryError : public std::invalid_argument {

@@ -12,12 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "ship_lrm/rotor/inflow_model.hpp"
+#include "ship_lrm/common/vec.hpp"
 #include "ship_lrm/wake/ship_geometry.hpp"
 
 namespace ship_lrm::wake {
-using rotor::Vec3;
-using Mat3 = Eigen::Matrix3d;
 
 class MotionError : public std::invalid_argument {
  public:

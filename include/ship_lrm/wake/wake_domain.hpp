@@ -65,7 +65,7 @@ struct WakeConfig {
 
 class ShipWakeDomain {
  public:
-  // Throws lbm::ConfigError for bad values, GeometryError when the ship does not fit the domain.
+  // Throws ConfigError for bad values, GeometryError when the ship does not fit the domain.
   ShipWakeDomain(const WakeConfig& cfg, std::shared_ptr<const ShipGeometry> ship, std::shared_ptr<const ShipMotion> motion);
   const WakeConfig& config() const { return cfg_; }
   const lbm::UnitConverter& units() const { return units_; }

@@ -62,7 +62,7 @@ struct PrecomputeResult {
   ProbeSeries probes;
 };
 
-// Throws lbm::ConfigError / GeometryError / MotionError / TableError for bad input before any step.
+// Throws ConfigError / GeometryError / MotionError / TableError for bad input before any step.
 PrecomputeResult precompute_wake(const PrecomputeOptions& opt);
 
 // Named presets: "default" (the approach scenario's table: NatoGD full scale, the approach
